@@ -1,0 +1,46 @@
+# The README's two commands: `make run` (install what is missing, build, render the demo show)
+# and `make test` (build, then every test; the unit tests again under ASan and UBSan).
+BUILD      ?= build
+ASAN_BUILD ?= build-asan
+JOBS       ?= $(shell nproc)
+DEMO       := examples/demo/demo.haze.json
+HAZE       := $(BUILD)/app/haze
+
+.PHONY: all deps configure build run test test-fast test-asan clean
+
+all: build
+
+deps:
+	@tools/install-deps.sh
+
+$(BUILD)/build.ninja:
+	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+
+configure: deps $(BUILD)/build.ninja
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+run: build
+	@mkdir -p out
+	$(HAZE) render $(DEMO) --all-cues -o out/
+	@ls -1 out/*.png
+	@if [ -n "$${DISPLAY:-}$${WAYLAND_DISPLAY:-}" ]; then $(HAZE) open $(DEMO); fi
+
+# Everything: the unit, render, CLI and GUI tests, then the unit tests under sanitizers.
+test: build test-asan
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 900
+
+test-fast: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L unit
+
+$(ASAN_BUILD)/build.ninja:
+	cmake -S . -B $(ASAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHAZE_SANITIZE=ON -DHAZE_BUILD_GL=OFF
+
+test-asan: deps $(ASAN_BUILD)/build.ninja
+	cmake --build $(ASAN_BUILD) -j $(JOBS)
+	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j $(JOBS) --timeout 900
+
+clean:
+	rm -rf $(BUILD) $(ASAN_BUILD) out

@@ -1,0 +1,21 @@
+// The haze program's subcommands. main.cpp parses the first word and hands the rest over; each
+// returns the process exit status and prints its own errors (one line each) to stderr.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace haze {
+
+using Args = std::vector<std::string>;  // the words after the subcommand
+
+int runRender(const Args& args);        // app/cmd_render.cpp
+int runFixture(const Args& args);       // app/cmd_fixture.cpp   (haze fixture info FILE --json)
+int runState(const Args& args);         // app/cmd_state.cpp     (haze state SHOW --cue N ...)
+int runValidate(const Args& args);      // app/cmd_validate.cpp  (haze validate SHOW)
+int runBench(const Args& args);         // app/cmd_bench.cpp
+int runLive(const Args& args);          // app/cmd_live.cpp
+int runImportMvr(const Args& args);     // app/cmd_import_mvr.cpp
+int runGui(const Args& args);           // app/gui/ (haze, haze open SHOW)
+
+}  // namespace haze

@@ -1,0 +1,53 @@
+// FrameState: everything the renderer (GPU or CPU reference) needs for one frame, as plain data:
+// the camera, the medium, and each fixture's beam (pose and optics). Built by app/ from a show
+// and its playback state; the renderer never sees shows or profiles.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "fixtures/beam_optics.h"
+#include "fixtures/pose.h"
+
+namespace haze {
+
+struct CameraState {
+  glm::vec3 position{0.0f, 2.0f, 10.0f};
+  glm::vec3 target{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fovYDeg = 40.0f;
+  float farM = 100.0f;   // where a ray that hits nothing stops
+  float nearM = 0.05f;
+};
+
+enum class Phase { Hazy, Isotropic, HenyeyGreenstein };
+
+struct MediumState {
+  float scattering = 0.0f;  // sigma_s [1/m]
+  float absorption = 0.0f;  // sigma_a [1/m]
+  Phase phase = Phase::Hazy;
+  float g = 0.0f;           // HG asymmetry
+  glm::vec3 ambient{0.0f};
+  glm::vec3 background{0.0f};
+  float extinction() const { return scattering + absorption; }
+};
+
+struct BeamState {
+  int fixtureId = 0;
+  BeamPose pose;
+  BeamOptics optics;
+  // Changes whenever pose or optics change: the GPU renderer keys its shadow-map and
+  // light-map caches on it (equal keys promise equal beams).
+  uint64_t poseKey = 0;
+  uint64_t opticsKey = 0;
+};
+
+struct FrameState {
+  CameraState camera;
+  MediumState medium;
+  std::vector<BeamState> beams;
+};
+
+}  // namespace haze

@@ -1,0 +1,19 @@
+// physics.md's formulas as CPU functions, shared by the reference integrator, tests and the
+// frame builder. shaders/physics.glsl holds their GLSL twins; tests/render compares the two.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "renderer/scene/frame_state.h"
+
+namespace haze {
+
+constexpr float kPi = 3.14159265358979323846f;
+
+// Phase function p(a) [1/sr], integral over the sphere = 1; cosA = dot(w_in, w_out).
+float phaseFunction(const MediumState& m, float cosA);
+
+// I_eff towards world point x from a beam, in cd per RGB channel, without visibility.
+glm::vec3 beamIntensityTowards(const BeamState& beam, const glm::vec3& x);
+
+}  // namespace haze

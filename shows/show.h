@@ -1,0 +1,101 @@
+// Show: the show model of show-format.md (venue, atmosphere, cameras, profiles, fixtures with
+// patch, cue lists), loaded from and saved to *.haze.json. No GL.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+#include "fixtures/attributes.h"
+#include "fixtures/profile.h"
+#include "fixtures/result.h"
+
+namespace haze {
+
+struct CameraDef {
+  std::string name;
+  glm::vec3 position{0.0f, 2.0f, 10.0f};
+  glm::vec3 target{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fovYDeg = 40.0f;
+  float farM = 100.0f;
+};
+
+struct AtmosphereDef {
+  float scattering = 0.0f;      // sigma_s [1/m]
+  float absorption = 0.0f;      // sigma_a [1/m]
+  std::string phase = "hazy";   // hazy | isotropic | hg
+  float g = 0.0f;               // hg asymmetry
+  glm::vec3 ambient{0.0f};      // number or [r, g, b] in the file
+  glm::vec3 background{0.0f};
+};
+
+struct Patch {
+  int universe = 1;  // from 1
+  int address = 1;   // 1..512
+};
+
+struct FixtureDef {
+  int id = 0;
+  std::string name;
+  std::string profile;  // key into Show::profiles
+  std::string mode;
+  glm::vec3 position{0.0f};
+  glm::vec3 rotationDeg{0.0f};  // R = Rz * Ry * Rx
+  std::optional<Patch> patch;
+};
+
+// The attributes a cue sets for one fixture; unset ones track from earlier cues.
+struct CueValues {
+  std::optional<float> intensity, panDeg, tiltDeg, zoomDeg, goboRotationDeg, iris;
+  std::optional<glm::vec3> color;
+  std::optional<std::string> gobo;
+  bool operator==(const CueValues&) const = default;
+};
+
+struct Cue {
+  std::string number;  // decimal string: "1", "1.5", "10"
+  std::string label;
+  double fadeS = 0.0;
+  double delayS = 0.0;
+  std::optional<double> followS;  // empty = wait for the operator
+  std::map<int, CueValues> values;  // by fixture id
+};
+
+struct CueList {
+  std::string name;
+  std::vector<Cue> cues;
+};
+
+struct ProfileRef {
+  std::string path;                  // relative to the show file; "" when inline
+  std::optional<nlohmann::json> inlineObject;
+};
+
+struct Show {
+  std::filesystem::path file;        // where it was loaded from (paths inside are relative to it)
+  std::string venueGltf;             // relative to the show file
+  AtmosphereDef atmosphere;
+  std::vector<CameraDef> cameras;
+  std::map<std::string, ProfileRef> profiles;
+  std::vector<FixtureDef> fixtures;
+  std::vector<CueList> cueLists;
+
+  const FixtureDef* findFixture(int id) const;
+  const CueList* findCueList(const std::string& name) const;  // "" = the first list
+  std::filesystem::path resolve(const std::string& relative) const;  // against file's folder
+};
+
+using ProfileSet = std::map<std::string, std::shared_ptr<const Profile>>;
+
+Result<Show> loadShow(const std::filesystem::path& file);
+// Loads every profile the show names (files relative to the show, or inline objects).
+Result<ProfileSet> loadProfiles(const Show& show);
+
+}  // namespace haze

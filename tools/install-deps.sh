@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs the Debian packages haze needs that are missing (nothing else is downloaded).
+# Root runs apt-get directly; anyone else goes through sudo.
+set -euo pipefail
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libglm-dev nlohmann-json3-dev libstb-dev libtinygltf-dev libpugixml-dev libzip-dev
+  libglfw3-dev libimgui-dev libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
+  libgtest-dev libassimp-dev
+  xvfb xdotool x11-utils imagemagick
+  nodejs npm
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
