@@ -1,8 +1,10 @@
 // Cue playback, the tracking model of show-format.md. The pure face: the state of every fixture
-// at a moment after GO. (The clock-driven player for the GUI and live playback sits beside it.)
+// at a moment after GO. The clock-driven player for the GUI and live playback (GO, BACK, GOTO,
+// follow chains) is shows/cue_player.h and is built from the same pieces.
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 
 #include "fixtures/attributes.h"
@@ -16,10 +18,35 @@ using StageState = std::map<int, Attributes>;  // fixture id -> attributes
 // The tracked full state of cue cueIndex (all fixtures of the show, defaults where unset).
 StageState trackedState(const Show& show, const ProfileSet& profiles, const CueList& list,
                         size_t cueIndex);
-// The state secondsSinceGo after GO into cue cueIndex from the full state of the cue before it.
+// The state secondsSinceGo after GO into cue cueIndex from the full state of the cue before it
+// (before the first cue: every fixture at its defaults). Follows do not fire here; see
+// CuePlayer for that.
 StageState stateAt(const Show& show, const ProfileSet& profiles, const CueList& list,
                    size_t cueIndex, double secondsSinceGo);
-// Index of the cue with this number ("1", "1.5"), or an error naming the list.
+// Index of the cue with this number ("1", "1.5"; "1.50" finds "1.5"), or an error naming the list.
 Result<size_t> findCue(const CueList& list, const std::string& number);
+
+// --- The pieces both faces share. ---
+
+// Every fixture of the show at its defaults: the state before the first cue.
+StageState defaultState(const Show& show);
+
+struct CueTiming {
+  double delayS = 0.0;
+  double fadeS = 0.0;
+};
+
+// Where a crossfade is secondsSinceGo after GO: -1 during the delay (nothing has moved), then
+// 0..1 linearly over the fade, 1 when done; a fade of 0 jumps from -1 to 1 when the delay ends.
+double fadeProgress(const CueTiming& timing, double secondsSinceGo);
+
+// One fixture's attributes at `progress` (from fadeProgress): continuous attributes linear from
+// `from` to `to`, colour per channel, gobo switched as soon as progress >= 0. An unset zoom
+// stands for fieldAngleDeg (the profile's field angle) while fading to or from a set one.
+Attributes blendAttributes(const Attributes& from, const Attributes& to, double progress,
+                           std::optional<float> fieldAngleDeg);
+// The same for a whole stage; fixtures are matched by id, field angles come from `profiles`.
+StageState blendStates(const Show& show, const ProfileSet& profiles, const StageState& from,
+                       const StageState& to, double progress);
 
 }  // namespace haze

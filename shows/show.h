@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,7 +34,7 @@ struct AtmosphereDef {
   std::string phase = "hazy";   // hazy | isotropic | hg
   float g = 0.0f;               // hg asymmetry
   glm::vec3 ambient{0.0f};      // number or [r, g, b] in the file
-  glm::vec3 background{0.0f};
+  glm::vec3 background{0.0f};   // number or [r, g, b] in the file; 0 unless the show sets one
 };
 
 struct Patch {
@@ -76,11 +77,24 @@ struct CueList {
 struct ProfileRef {
   std::string path;                  // relative to the show file; "" when inline
   std::optional<nlohmann::json> inlineObject;
+  bool inlineWrapped = false;        // written as {"inline": {...}} rather than the bare object
 };
+
+// What a show file looked like on disk when it was loaded or last saved, so that a save can
+// refuse to overwrite changes someone else made in between (shows/show_save.h).
+struct FileStamp {
+  std::uint64_t contentHash = 0;     // FNV-1a 64 of the file's bytes
+  std::uintmax_t sizeBytes = 0;
+  bool operator==(const FileStamp&) const = default;
+};
+
+// The newest show format version this haze reads and writes (show-format.md).
+inline constexpr int kShowFormatVersion = 1;
 
 struct Show {
   std::filesystem::path file;        // where it was loaded from (paths inside are relative to it)
-  std::string venueGltf;             // relative to the show file
+  std::optional<FileStamp> stamp;    // the file as loaded or last saved; empty for a new show
+  std::string venueGltf;             // relative to the show file; "" = no venue (an empty stage)
   AtmosphereDef atmosphere;
   std::vector<CameraDef> cameras;
   std::map<std::string, ProfileRef> profiles;
@@ -94,6 +108,8 @@ struct Show {
 
 using ProfileSet = std::map<std::string, std::shared_ptr<const Profile>>;
 
+// Reads and checks the structure of a show file (types, required keys, ranges that need no
+// profile). Fails with the first problem; validateShowFile (shows/show_validate.h) lists all.
 Result<Show> loadShow(const std::filesystem::path& file);
 // Loads every profile the show names (files relative to the show, or inline objects).
 Result<ProfileSet> loadProfiles(const Show& show);

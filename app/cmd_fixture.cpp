@@ -1,0 +1,64 @@
+// `haze fixture info FILE [--json]`: the facts of any profile file (native JSON, IES, LDT, GDTF)
+// on stdout; a bad file or bad arguments give one line on stderr and exit status 1.
+#include <iostream>
+
+#include "app/commands.h"
+#include "fixtures/facts.h"
+#include "fixtures/profile.h"
+
+namespace haze {
+
+namespace {
+
+constexpr const char* kUsage = "usage: haze fixture info FILE [--json]";
+
+void printText(const nlohmann::ordered_json& f) {
+  auto num = [&](const char* k) { return f[k].get<double>(); };
+  std::cout << f["name"].get<std::string>() << " (" << f["manufacturer"].get<std::string>() << ")\n"
+            << "  peak " << num("peak_candela") << " cd, " << num("lumens") << " lm\n"
+            << "  beam " << num("beam_angle") << " deg (C0 " << num("beam_angle_c0") << ", C90 " << num("beam_angle_c90") << ")\n"
+            << "  field " << num("field_angle") << " deg (C0 " << num("field_angle_c0") << ", C90 " << num("field_angle_c90") << ")\n"
+            << "  symmetry " << f["symmetry"].get<std::string>() << ", grid " << f["grid"]["gamma"].get<int>() << " gamma x "
+            << f["grid"]["c"].get<int>() << " C\n";
+}
+
+}  // namespace
+
+int runFixture(const Args& args) {
+  if (args.empty() || args[0] != "info") {
+    std::cerr << "haze fixture: expected the subcommand \"info\"; " << kUsage << "\n";
+    return 1;
+  }
+  std::string file;
+  bool json = false;
+  for (size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "--json") {
+      json = true;
+    } else if (!args[i].empty() && args[i][0] == '-') {
+      std::cerr << "haze fixture info: unknown option \"" << args[i] << "\"; " << kUsage << "\n";
+      return 1;
+    } else if (file.empty()) {
+      file = args[i];
+    } else {
+      std::cerr << "haze fixture info: more than one file given; " << kUsage << "\n";
+      return 1;
+    }
+  }
+  if (file.empty()) {
+    std::cerr << "haze fixture info: no file given; " << kUsage << "\n";
+    return 1;
+  }
+  auto profile = loadProfile(file);
+  if (!profile) {
+    std::cerr << profile.error().str() << "\n";
+    return 1;
+  }
+  nlohmann::ordered_json facts = fixtureFacts(**profile);
+  if (json)
+    std::cout << facts.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+  else
+    printText(facts);
+  return 0;
+}
+
+}  // namespace haze

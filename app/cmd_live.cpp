@@ -1,0 +1,256 @@
+// haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S] [--state-json OUT]
+//                [--render OUT.png]: DMX in from a console, headless. Receives for S seconds
+// (or until SIGINT/SIGTERM), then writes the fixtures' final states and/or renders them, and
+// prints what arrived (good packets, drops by reason, rate, sources) to stderr.
+#include <algorithm>
+#include <charconv>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.h"
+#include "app/render_job.h"
+#include "app/udp_receiver.h"
+#include "shows/show.h"
+#include "shows/show_json.h"
+
+namespace haze {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S]\n"
+    "                 [--state-json OUT.json] [--render OUT.png|OUT.pfm]\n"
+    "                 [--artnet-port P] [--sacn-port P] [--multicast] [--on-loss hold|blackout]\n"
+    "                 [--no-preview] [--camera NAME] [--width W --height H] [--quality Q]\n"
+    "Listens for Art-Net (UDP 6454) and sACN E1.31 (UDP 5568); neither flag means both.\n"
+    "--bind: the local IPv4 address to listen on (default 127.0.0.1: this machine only).\n"
+    "sACN universe N is haze universe N; Art-Net Port-Address P (Net:Sub-Net:Universe) is\n"
+    "haze universe P + 1, so Art-Net 0:0:0 drives patch universe 1.\n"
+    "sACN multicast (239.255.hi.lo) is joined for the patched universes when --bind is not a\n"
+    "loopback address, or with --multicast. Port 0 picks a free port (printed on stderr).\n"
+    "--duration 0 (the default) runs until Ctrl-C.\n";
+
+volatile std::sig_atomic_t gStop = 0;
+void onSignal(int) { gStop = 1; }
+
+int fail(const std::string& line) {
+  std::fprintf(stderr, "haze live: %s\n", line.c_str());
+  return 1;
+}
+
+bool parseNumber(const std::string& s, double& out) {
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
+  return r.ec == std::errc() && r.ptr == s.data() + s.size();
+}
+
+// The shape of `haze state --json`: {"<id>": {"intensity", "pan", "tilt", "color", "zoom",
+// "gobo", "gobo_rotation", "iris"}}; zoom falls back to the profile's field angle.
+nlohmann::json stateToJson(const Show& show, const ProfileSet& profiles, const StageState& state) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [id, a] : state) {
+    float zoom = a.zoomDeg.value_or(0.0f);
+    if (!a.zoomDeg) {
+      const FixtureDef* f = show.findFixture(id);
+      auto p = f ? profiles.find(f->profile) : profiles.end();
+      if (p != profiles.end() && p->second) zoom = p->second->fieldAngleDeg;
+    }
+    j[std::to_string(id)] = {
+        {"intensity", tidy(a.intensity)},
+        {"pan", tidy(a.panDeg)},
+        {"tilt", tidy(a.tiltDeg)},
+        {"color", {tidy(a.color.r), tidy(a.color.g), tidy(a.color.b)}},
+        {"zoom", tidy(zoom)},
+        {"gobo", a.gobo},
+        {"gobo_rotation", tidy(a.goboRotationDeg)},
+        {"iris", tidy(a.iris)},
+    };
+  }
+  return j;
+}
+
+// Written beside the target and renamed, so a reader never sees half a file.
+Status writeFileAtomically(const std::filesystem::path& out, const std::string& text) {
+  std::filesystem::path tmp = out;
+  tmp += ".tmp";
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    if (!f) return Error{out.string(), "", "cannot open for writing; expected a writable folder"};
+    f << text;
+    f.flush();
+    if (!f) return Error{out.string(), "", "write failed (disk full?)"};
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, out, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    return Error{out.string(), "", "cannot replace the file: " + ec.message()};
+  }
+  return Ok{};
+}
+
+std::string printable(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) out += (c >= 0x20 && c < 0x7F) ? static_cast<char>(c) : '?';
+  return out;
+}
+
+void printReport(const LiveReceiver& live, double seconds) {
+  const DmxInputStats& s = live.stats();
+  std::fprintf(stderr,
+               "haze live: %.1f s: %llu datagrams, %llu good (%.1f/s), %llu malformed, %llu ignored, "
+               "%llu late, %llu terminated, %llu unpatched universe, %llu over source limits\n",
+               seconds, static_cast<unsigned long long>(s.received),
+               static_cast<unsigned long long>(s.good), seconds > 0 ? s.good / seconds : 0.0,
+               static_cast<unsigned long long>(s.malformedTotal()),
+               static_cast<unsigned long long>(s.ignored), static_cast<unsigned long long>(s.late),
+               static_cast<unsigned long long>(s.terminated),
+               static_cast<unsigned long long>(s.unwatched),
+               static_cast<unsigned long long>(s.exceeded));
+  for (const auto& [reason, count] : s.malformed) {
+    std::fprintf(stderr, "haze live: malformed %s: %llu\n", reason.c_str(),
+                 static_cast<unsigned long long>(count));
+  }
+  for (const DmxSourceInfo& src : live.sources()) {
+    std::fprintf(stderr, "haze live: source %s %s \"%s\" universe %d priority %d%s\n",
+                 src.id.protocol == DmxProtocol::Sacn ? "sACN" : "Art-Net", src.id.str().c_str(),
+                 printable(src.name).c_str(), src.universe, src.priority,
+                 src.winning ? "" : " (outranked)");
+  }
+}
+
+}  // namespace
+
+int runLive(const Args& args) {
+  std::string showPath, stateJson, renderOut, onLoss = "hold", quality = "default";
+  LiveOptions options;
+  RenderJobOptions render;
+  bool artNet = false, sacn = false;
+  double duration = 0.0, width = render.width, height = render.height;
+  double artNetPort = options.udp.artNetPort, sacnPort = options.udp.sacnPort;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](std::string& dst) {
+      if (i + 1 >= args.size()) return false;
+      dst = args[++i];
+      return true;
+    };
+    auto number = [&](double& dst) {
+      std::string s;
+      return value(s) && parseNumber(s, dst);
+    };
+    auto port = [&](double& dst) { return number(dst) && dst >= 0 && dst <= 65535 && dst == static_cast<int>(dst); };
+    if (a == "--artnet") {
+      artNet = true;
+    } else if (a == "--sacn") {
+      sacn = true;
+    } else if (a == "--bind") {
+      if (!value(options.udp.bindAddress)) return fail("--bind needs an IPv4 address such as 127.0.0.1");
+    } else if (a == "--duration") {
+      if (!number(duration) || duration < 0 || duration > 1e7) return fail("--duration needs seconds >= 0");
+    } else if (a == "--state-json") {
+      if (!value(stateJson)) return fail("--state-json needs an output file");
+    } else if (a == "--render") {
+      if (!value(renderOut)) return fail("--render needs an output image (.png or .pfm)");
+    } else if (a == "--artnet-port") {
+      if (!port(artNetPort)) return fail("--artnet-port needs a port 0..65535");
+    } else if (a == "--sacn-port") {
+      if (!port(sacnPort)) return fail("--sacn-port needs a port 0..65535");
+    } else if (a == "--multicast") {
+      options.udp.multicast = true;
+    } else if (a == "--on-loss") {
+      if (!value(onLoss) || (onLoss != "hold" && onLoss != "blackout")) {
+        return fail("--on-loss needs hold or blackout");
+      }
+    } else if (a == "--no-preview") {
+      options.input.acceptPreview = false;
+    } else if (a == "--camera") {
+      if (!value(render.camera)) return fail("--camera needs a camera name");
+    } else if (a == "--width") {
+      if (!number(width) || width < 1 || width > 16384) return fail("--width needs a whole number 1..16384");
+    } else if (a == "--height") {
+      if (!number(height) || height < 1 || height > 16384) return fail("--height needs a whole number 1..16384");
+    } else if (a == "--quality") {
+      if (!value(quality)) return fail("--quality needs draft|default|high|reference");
+    } else if (a == "--help" || a == "-h") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    } else if (!a.empty() && a[0] == '-') {
+      return fail("unknown option '" + a + "' (see haze live --help)");
+    } else if (showPath.empty()) {
+      showPath = a;
+    } else {
+      return fail("unexpected argument '" + a + "' (one show at a time)");
+    }
+  }
+  if (showPath.empty()) return fail("no show given (see haze live --help)");
+  if (quality == "draft") render.quality = Quality::Draft;
+  else if (quality == "default") render.quality = Quality::Default;
+  else if (quality == "high") render.quality = Quality::High;
+  else if (quality == "reference") render.quality = Quality::Reference;
+  else return fail("--quality '" + quality + "' is not one of draft|default|high|reference");
+  render.width = static_cast<int>(width);
+  render.height = static_cast<int>(height);
+  if (!artNet && !sacn) artNet = sacn = true;
+  options.udp.artNet = artNet;
+  options.udp.sacn = sacn;
+  options.udp.artNetPort = static_cast<int>(artNetPort);
+  options.udp.sacnPort = static_cast<int>(sacnPort);
+  options.input.merge.onLoss = onLoss == "blackout" ? LossPolicy::Blackout : LossPolicy::HoldLastLook;
+
+  Result<Show> show = loadShow(showPath);
+  if (!show) return fail(show.error().str());
+  Result<ProfileSet> profiles = loadProfiles(*show);
+  if (!profiles) return fail(profiles.error().str());
+
+  auto live = LiveReceiver::open(*show, *profiles, options);
+  if (!live) return fail(live.error().str());
+  LiveReceiver& receiver = **live;
+  if (receiver.udp().artNetPort()) {
+    std::fprintf(stderr, "haze live: Art-Net on %s:%d (haze universe = Port-Address + 1)\n",
+                 options.udp.bindAddress.c_str(), receiver.udp().artNetPort());
+  }
+  if (receiver.udp().sacnPort()) {
+    std::fprintf(stderr, "haze live: sACN on %s:%d\n", options.udp.bindAddress.c_str(),
+                 receiver.udp().sacnPort());
+  }
+  for (const std::string& note : receiver.udp().notes()) {
+    std::fprintf(stderr, "haze live: %s\n", note.c_str());
+  }
+
+  struct sigaction sa {}, oldInt{}, oldTerm{};
+  sa.sa_handler = onSignal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, &oldInt);
+  sigaction(SIGTERM, &sa, &oldTerm);
+  gStop = 0;
+  const double start = LiveReceiver::nowS();
+  while (!gStop) {
+    const double elapsed = LiveReceiver::nowS() - start;
+    if (duration > 0 && elapsed >= duration) break;
+    const double leftMs = duration > 0 ? (duration - elapsed) * 1000.0 : 100.0;
+    receiver.poll(static_cast<int>(std::clamp(leftMs, 1.0, 100.0)));
+  }
+  const StageState& state = receiver.poll(0);
+  sigaction(SIGINT, &oldInt, nullptr);
+  sigaction(SIGTERM, &oldTerm, nullptr);
+  printReport(receiver, LiveReceiver::nowS() - start);
+
+  int status = 0;
+  if (!stateJson.empty()) {
+    const std::string text = stateToJson(*show, *profiles, state).dump(2) + "\n";
+    if (Status s = writeFileAtomically(stateJson, text); !s) status = fail(s.error().str());
+  }
+  if (!renderOut.empty()) {
+    if (Status s = renderStateToFile(*show, *profiles, state, render, renderOut); !s) {
+      status = fail(s.error().str());
+    }
+  }
+  return status;
+}
+
+}  // namespace haze

@@ -1,0 +1,95 @@
+#include "app/frame_builder.h"
+
+#include <cstring>
+#include <functional>
+
+namespace haze {
+namespace {
+
+// Cache keys: equal keys promise equal shadow maps (pose) and light maps (optics) to the
+// renderer. Dimmer and colour are not in the light map, so fades of them never re-bake it.
+uint64_t hashBytes(uint64_t h, const void* data, size_t n) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;  // FNV-1a
+  return h;
+}
+template <class T>
+uint64_t hashValue(uint64_t h, const T& v) {
+  return hashBytes(h, &v, sizeof(T));
+}
+constexpr uint64_t kFnvBasis = 14695981039346656037ull;
+
+}  // namespace
+
+CameraState cameraState(const CameraDef& def) {
+  CameraState c;
+  c.position = def.position;
+  c.target = def.target;
+  c.up = def.up;
+  c.fovYDeg = def.fovYDeg;
+  c.farM = def.farM;
+  return c;
+}
+
+MediumState mediumState(const AtmosphereDef& def) {
+  MediumState m;
+  m.scattering = def.scattering;
+  m.absorption = def.absorption;
+  m.phase = def.phase == "isotropic" ? Phase::Isotropic : def.phase == "hg" ? Phase::HenyeyGreenstein : Phase::Hazy;
+  m.g = def.g;
+  m.ambient = def.ambient;
+  m.background = def.background;
+  return m;
+}
+
+Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, const StageState& state,
+                              const std::string& cameraName) {
+  FrameState frame;
+  if (!cameraName.empty()) {
+    const CameraDef* found = nullptr;
+    for (const CameraDef& c : show.cameras)
+      if (c.name == cameraName) found = &c;
+    if (!found) {
+      std::string names;
+      for (const CameraDef& c : show.cameras) names += (names.empty() ? "" : ", ") + c.name;
+      return Error{show.file.string(), "/cameras", "no camera named '" + cameraName + "' (the show has: " +
+                                                       (names.empty() ? "none" : names) + ")"};
+    }
+    frame.camera = cameraState(*found);
+  } else if (!show.cameras.empty()) {
+    frame.camera = cameraState(show.cameras.front());
+  }
+  frame.medium = mediumState(show.atmosphere);
+
+  for (const FixtureDef& f : show.fixtures) {
+    auto p = profiles.find(f.profile);
+    if (p == profiles.end() || !p->second)
+      return Error{show.file.string(), "/fixtures", "fixture " + std::to_string(f.id) + " uses unknown profile '" +
+                                                        f.profile + "'"};
+    const Profile& profile = *p->second;
+    const auto s = state.find(f.id);
+    const Attributes a = s != state.end() ? s->second : Attributes{};
+    if (a.intensity <= 0.0f) continue;  // a dark fixture adds nothing to any pixel
+    BeamState b;
+    b.fixtureId = f.id;
+    b.pose = beamPose(f.position, f.rotationDeg, a.panDeg, a.tiltDeg, profile.lensOffset);
+    b.optics = profile.optics(a);
+    uint64_t pk = kFnvBasis;
+    pk = hashValue(pk, b.pose.lensPosition);
+    pk = hashValue(pk, b.pose.zb);
+    pk = hashValue(pk, b.pose.xb);
+    b.poseKey = pk;
+    uint64_t ok = kFnvBasis;
+    ok = hashValue(ok, b.optics.distribution.get());
+    ok = hashValue(ok, b.optics.profileFieldAngleDeg);
+    ok = hashValue(ok, b.optics.fieldAngleDeg);
+    ok = hashValue(ok, b.optics.gobo.get());
+    ok = hashValue(ok, b.optics.goboRotationDeg);
+    ok = hashValue(ok, b.optics.iris);
+    b.opticsKey = ok;
+    frame.beams.push_back(std::move(b));
+  }
+  return frame;
+}
+
+}  // namespace haze

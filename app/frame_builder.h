@@ -1,0 +1,21 @@
+// Show + profiles + a stage state -> the renderer's FrameState (camera, medium, one beam per
+// lit fixture). This is the only place where shows meet the renderer.
+#pragma once
+
+#include <string>
+
+#include "fixtures/result.h"
+#include "renderer/scene/frame_state.h"
+#include "shows/playback.h"
+#include "shows/show.h"
+
+namespace haze {
+
+// cameraName "" = the show's first camera (or a default view of the stage when it has none).
+Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, const StageState& state,
+                              const std::string& cameraName);
+
+CameraState cameraState(const CameraDef& def);
+MediumState mediumState(const AtmosphereDef& def);
+
+}  // namespace haze

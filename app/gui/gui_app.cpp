@@ -1,0 +1,215 @@
+// The GUI: a window on one show, drawn by the same renderer as `haze render`. The viewport
+// orbits around a target; cues play with GO / BACK through the pure playback function. Edits
+// of the show (placing, aiming, recording) come in through the command layer (issue 6).
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include "app/commands.h"
+#include "app/frame_builder.h"
+#include "app/window_context.h"
+#include "renderer/gl/gl.h"
+#include "renderer/renderer.h"
+#include "renderer/scene/image.h"
+#include "shows/playback.h"
+#include "shows/show.h"
+
+namespace haze {
+namespace {
+
+struct Orbit {
+  glm::vec3 target{0.0f, 2.0f, 0.0f};
+  float distanceM = 15.0f, yawRad = 0.0f, pitchRad = 0.2f;
+
+  static Orbit from(const CameraDef& c) {
+    Orbit o;
+    o.target = c.target;
+    const glm::vec3 d = c.position - c.target;
+    o.distanceM = std::max(glm::length(d), 0.5f);
+    o.yawRad = std::atan2(d.x, d.z);
+    o.pitchRad = std::asin(std::clamp(d.y / o.distanceM, -1.0f, 1.0f));
+    return o;
+  }
+  glm::vec3 position() const {
+    return target + distanceM * glm::vec3(std::cos(pitchRad) * std::sin(yawRad), std::sin(pitchRad),
+                                          std::cos(pitchRad) * std::cos(yawRad));
+  }
+};
+
+struct Options {
+  std::string show;
+  std::string screenshot;
+  int frames = 0;
+  int width = 1280, height = 720;
+};
+
+int fail(const std::string& line) {
+  std::fprintf(stderr, "haze: %s\n", line.c_str());
+  return 1;
+}
+
+Status saveScreenshot(int width, int height, const std::string& file) {
+  std::vector<unsigned char> rgba(static_cast<size_t>(width) * height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  std::vector<unsigned char> rgb(static_cast<size_t>(width) * height * 3);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < 3; ++c)
+        rgb[(static_cast<size_t>(y) * width + x) * 3 + c] = rgba[(static_cast<size_t>(height - 1 - y) * width + x) * 4 + c];
+  return writePng8(rgb, width, height, file);
+}
+
+}  // namespace
+
+int runGui(const Args& args) {
+  Options opt;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto intValue = [&](int& dst) {
+      if (i + 1 >= args.size()) return false;
+      const std::string& s = args[++i];
+      return std::from_chars(s.data(), s.data() + s.size(), dst).ec == std::errc() && dst > 0;
+    };
+    if (a == "--screenshot" && i + 1 < args.size()) opt.screenshot = args[++i];
+    else if (a == "--frames") { if (!intValue(opt.frames)) return fail("--frames needs a positive number"); }
+    else if (a == "--width") { if (!intValue(opt.width)) return fail("--width needs a positive number"); }
+    else if (a == "--height") { if (!intValue(opt.height)) return fail("--height needs a positive number"); }
+    else if (!a.empty() && a[0] == '-') return fail("open: unknown option '" + a + "'");
+    else opt.show = a;
+  }
+  if (opt.show.empty()) opt.show = HAZE_DEMO_SHOW;
+  if (!opt.screenshot.empty() && opt.frames <= 0) opt.frames = 3;
+
+  auto show = loadShow(opt.show);
+  if (!show) return fail(show.error().str());
+  auto profiles = loadProfiles(*show);
+  if (!profiles) return fail(profiles.error().str());
+  auto venue = loadVenue(show->resolve(show->venueGltf));
+  if (!venue) return fail(venue.error().str());
+
+  auto ctx = WindowContext::create(opt.width, opt.height, "haze - " + show->file.filename().string(),
+                                   std::getenv("HAZE_GL_DEBUG") != nullptr);
+  if (!ctx) return fail(ctx.error().str());
+  GLFWwindow* window = (*ctx)->window();
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // the layout is ours, not a file in the working folder
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450");
+
+  std::unique_ptr<Renderer> renderer;
+  int rendererW = 0, rendererH = 0;
+  const CueList* list = show->findCueList("");
+  size_t cue = 0;
+  auto goTime = std::chrono::steady_clock::now();
+  Orbit orbit = show->cameras.empty() ? Orbit{} : Orbit::from(show->cameras.front());
+  float exposureEv = 0.0f;
+  double frameMs = 0.0;
+  int frame = 0;
+  int exitCode = 0;
+
+  while (!glfwWindowShouldClose(window)) {
+    glfwPollEvents();
+    int fbW = 0, fbH = 0;
+    glfwGetFramebufferSize(window, &fbW, &fbH);
+    if (fbW <= 0 || fbH <= 0) continue;
+    if (!renderer || fbW != rendererW || fbH != rendererH) {
+      RenderSettings rs;
+      rs.width = fbW;
+      rs.height = fbH;
+      auto r = Renderer::create(*venue, rs);
+      if (!r) { exitCode = fail(r.error().str()); break; }
+      renderer = std::move(*r);
+      rendererW = fbW;
+      rendererH = fbH;
+    }
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    ImGuiIO& io = ImGui::GetIO();
+    const bool hasList = list && !list->cues.empty();
+    auto go = [&](size_t to) {
+      cue = to;
+      goTime = std::chrono::steady_clock::now();
+    };
+    if (!io.WantCaptureKeyboard && hasList) {
+      if ((ImGui::IsKeyPressed(ImGuiKey_Space) || ImGui::IsKeyPressed(ImGuiKey_Enter)) && cue + 1 < list->cues.size())
+        go(cue + 1);
+      if (ImGui::IsKeyPressed(ImGuiKey_Backspace) && cue > 0) go(cue - 1);
+    }
+    if (!io.WantCaptureMouse) {
+      if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+        orbit.yawRad -= io.MouseDelta.x * 0.005f;
+        orbit.pitchRad = std::clamp(orbit.pitchRad + io.MouseDelta.y * 0.005f, -1.5f, 1.5f);
+      }
+      if (io.MouseWheel != 0.0f) orbit.distanceM = std::clamp(orbit.distanceM * std::pow(0.9f, io.MouseWheel), 0.5f, 200.0f);
+    }
+
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(300, 360), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Playback");
+    ImGui::Text("%.1f ms per frame", frameMs);
+    if (hasList) {
+      ImGui::Text("List: %s", list->name.c_str());
+      if (ImGui::Button("GO") && cue + 1 < list->cues.size()) go(cue + 1);
+      ImGui::SameLine();
+      if (ImGui::Button("BACK") && cue > 0) go(cue - 1);
+      for (size_t i = 0; i < list->cues.size(); ++i) {
+        const Cue& c = list->cues[i];
+        const std::string label = c.number + "  " + c.label;
+        if (ImGui::Selectable(label.c_str(), i == cue)) go(i);
+      }
+    }
+    ImGui::SliderFloat("Haze (1/m)", &show->atmosphere.scattering, 0.0f, 0.2f, "%.3f");
+    ImGui::SliderFloat("Exposure (EV)", &exposureEv, -6.0f, 6.0f, "%.1f");
+    ImGui::TextUnformatted("Drag: orbit. Wheel: zoom. Space: GO.");
+    ImGui::End();
+    ImGui::Render();
+
+    const auto t0 = std::chrono::steady_clock::now();
+    const double sinceGo = std::chrono::duration<double>(t0 - goTime).count();
+    StageState state = hasList ? stateAt(*show, *profiles, *list, cue, sinceGo) : StageState{};
+    auto frameState = buildFrame(*show, *profiles, state, "");
+    if (!frameState) { exitCode = fail(frameState.error().str()); break; }
+    frameState->camera.position = orbit.position();
+    frameState->camera.target = orbit.target;
+    renderer->render(*frameState);
+    renderer->drawDisplay({.exposureEv = exposureEv}, 0, 0, 0, fbW, fbH);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+    ++frame;
+    if (opt.frames > 0 && frame >= opt.frames) {
+      if (!opt.screenshot.empty()) {
+        const Status s = saveScreenshot(fbW, fbH, opt.screenshot);
+        if (!s) exitCode = fail(s.error().str());
+      }
+      glfwSwapBuffers(window);
+      break;
+    }
+    glfwSwapBuffers(window);
+  }
+
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  return exitCode;
+}
+
+}  // namespace haze

@@ -1,0 +1,42 @@
+// The haze program: the first word picks a subcommand (app/commands.h); no word opens the GUI
+// on the bundled demo show.
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "app/commands.h"
+
+namespace {
+
+constexpr const char* kHelp =
+    "haze: stage-lighting previsualization\n"
+    "  haze                                 GUI on the bundled demo show\n"
+    "  haze open SHOW                       GUI on a show\n"
+    "  haze render SHOW [--cue N] [--at S] [--camera NAME] [--width W --height H]\n"
+    "                   [--quality draft|default|high|reference] -o OUT.(png|pfm)\n"
+    "  haze render SHOW --all-cues -o DIR/  one image per cue\n"
+    "  haze state SHOW --cue N [--at S] [--list NAME] --json\n"
+    "  haze validate SHOW\n"
+    "  haze fixture info FILE --json        native profile, .ies, .ldt or .gdtf\n"
+    "  haze bench [--fixtures N] [--width W --height H] [--quality Q] --json\n"
+    "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S]\n"
+    "Each subcommand takes --help.\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) return haze::runGui({});
+  const std::string cmd = argv[1];
+  const haze::Args rest(argv + 2, argv + argc);
+  if (cmd == "render") return haze::runRender(rest);
+  if (cmd == "state") return haze::runState(rest);
+  if (cmd == "validate") return haze::runValidate(rest);
+  if (cmd == "fixture") return haze::runFixture(rest);
+  if (cmd == "open") return haze::runGui(rest);
+  if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+    std::fputs(kHelp, stdout);
+    return 0;
+  }
+  std::fprintf(stderr, "haze: unknown command '%s' (try haze --help)\n", cmd.c_str());
+  return 2;
+}

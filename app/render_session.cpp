@@ -1,0 +1,69 @@
+#include "app/render_session.h"
+
+#include <cstdlib>
+
+#include "app/frame_builder.h"
+#include "renderer/scene/image.h"
+
+namespace haze {
+
+RenderSettings renderSettingsFor(Quality q, int width, int height) {
+  RenderSettings s;
+  s.width = width;
+  s.height = height;
+  switch (q) {
+    case Quality::Draft: s.lightMapSize = 256; s.shadowMapSize = 512; break;
+    case Quality::Default: s.lightMapSize = 512; s.shadowMapSize = 1024; break;
+    case Quality::High: s.lightMapSize = 1024; s.shadowMapSize = 2048; break;
+    case Quality::Reference: s.lightMapSize = 1024; s.shadowMapSize = 2048; break;
+  }
+  return s;
+}
+
+Result<Quality> parseQuality(const std::string& name) {
+  if (name == "draft") return Quality::Draft;
+  if (name == "default") return Quality::Default;
+  if (name == "high") return Quality::High;
+  if (name == "reference") return Quality::Reference;
+  return Error{"", "--quality", "unknown quality '" + name + "' (expected draft, default, high or reference)"};
+}
+
+Result<std::unique_ptr<RenderSession>> RenderSession::open(const Show& show, const RenderJobOptions& options) {
+  auto session = std::unique_ptr<RenderSession>(new RenderSession());
+  session->options_ = options;
+  const bool debug = std::getenv("HAZE_GL_DEBUG") != nullptr;
+  auto context = createHeadlessContext({.debug = debug});
+  if (!context) return context.error();
+  session->context_ = std::move(*context);
+  if (show.venueGltf.empty()) return Error{show.file.string(), "/venue/gltf", "the show names no venue"};
+  auto venue = loadVenue(show.resolve(show.venueGltf));
+  if (!venue) return venue.error();
+  session->venue_ = std::move(*venue);
+  auto renderer = Renderer::create(session->venue_, renderSettingsFor(options.quality, options.width, options.height));
+  if (!renderer) return renderer.error();
+  session->renderer_ = std::move(*renderer);
+  return session;
+}
+
+Status RenderSession::renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
+                                   const std::filesystem::path& out, float exposureEv) {
+  auto frame = buildFrame(show, profiles, state, options_.camera);
+  if (!frame) return frame.error();
+  renderer_->render(*frame);
+  const std::string ext = out.extension().string();
+  if (ext == ".pfm") return writePfm(renderer_->readRadiance(), out);
+  if (ext == ".png") {
+    const auto rgb = renderer_->readDisplay({.exposureEv = exposureEv});
+    return writePng8(rgb, options_.width, options_.height, out);
+  }
+  return Error{out.string(), "", "unknown image type (expected .png or .pfm)"};
+}
+
+Status renderStateToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
+                         const RenderJobOptions& options, const std::filesystem::path& out) {
+  auto session = RenderSession::open(show, options);
+  if (!session) return session.error();
+  return (*session)->renderToFile(show, profiles, state, out);
+}
+
+}  // namespace haze

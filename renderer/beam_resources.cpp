@@ -1,0 +1,135 @@
+#include "renderer/beam_resources.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace haze {
+namespace {
+
+uint64_t mix(uint64_t h, uint64_t v) { return h ^ (v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2)); }
+
+// Shadow frustum: the beam's cutoff cone, from a near plane close to the lens to the far
+// corner of the venue's bounds.
+glm::mat4 shadowViewProjection(const BeamState& b, const GpuVenue& venue, float cutoffRad) {
+  const glm::vec3 eye = b.pose.lensPosition;
+  float farM = 1.0f;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 c((i & 1) ? venue.boundsMax().x : venue.boundsMin().x,
+                      (i & 2) ? venue.boundsMax().y : venue.boundsMin().y,
+                      (i & 4) ? venue.boundsMax().z : venue.boundsMin().z);
+    farM = std::max(farM, glm::length(c - eye));
+  }
+  const float fov = std::min(2.0f * cutoffRad + glm::radians(2.0f), glm::radians(170.0f));
+  const glm::mat4 view = glm::lookAt(eye, eye + b.pose.zb, b.pose.xb);
+  return glm::perspective(fov, 1.0f, 0.02f, farM * 1.05f) * view;
+}
+
+}  // namespace
+
+BeamResources::BeamResources(const BeamResourceSettings& settings) : settings_(settings) {}
+
+void BeamResources::ensureCapacity(int beams) {
+  if (beams <= capacity_ && lightMaps_) return;
+  capacity_ = std::max({beams, 8, capacity_ * 2});
+  lightMaps_ = gl::Texture(GL_TEXTURE_2D_ARRAY, "light_maps");
+  glTextureStorage3D(lightMaps_.id(), 1, GL_R32F, settings_.lightMapSize, settings_.lightMapSize, capacity_);
+  glTextureParameteri(lightMaps_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(lightMaps_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(lightMaps_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glTextureParameteri(lightMaps_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  const float zero[4] = {0, 0, 0, 0};
+  glTextureParameterfv(lightMaps_.id(), GL_TEXTURE_BORDER_COLOR, zero);
+
+  shadowMaps_ = gl::Texture(GL_TEXTURE_2D_ARRAY, "shadow_maps");
+  glTextureStorage3D(shadowMaps_.id(), 1, GL_DEPTH_COMPONENT32F, settings_.shadowMapSize, settings_.shadowMapSize,
+                     capacity_);
+  glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+
+  ssbo_ = gl::Buffer("beams");
+  glNamedBufferStorage(ssbo_.id(), static_cast<GLsizeiptr>(sizeof(GpuBeam) * capacity_), nullptr,
+                       GL_DYNAMIC_STORAGE_BIT);
+  // New textures hold nothing: everything is baked again.
+  opticsKeys_.assign(static_cast<size_t>(capacity_), 0);
+  shadowKeys_.assign(static_cast<size_t>(capacity_), 0);
+  extents_.assign(static_cast<size_t>(capacity_), 1.0f);
+}
+
+void BeamResources::renderShadow(int layer, const glm::mat4& viewProj, const GpuVenue& venue,
+                                 const gl::Program& program) {
+  glNamedFramebufferTextureLayer(shadowFbo_.id(), GL_DEPTH_ATTACHMENT, shadowMaps_.id(), 0, layer);
+  glNamedFramebufferDrawBuffer(shadowFbo_.id(), GL_NONE);
+  glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo_.id());
+  glViewport(0, 0, settings_.shadowMapSize, settings_.shadowMapSize);
+  const float one = 1.0f;
+  glClearNamedFramebufferfv(shadowFbo_.id(), GL_DEPTH, 0, &one);
+  glUseProgram(program.id());
+  glProgramUniformMatrix4fv(program.id(), 0, 1, GL_FALSE, glm::value_ptr(viewProj));
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // surfaces are two-sided (physics.md)
+  // Slope-scaled offset keeps lit surfaces from shadowing themselves at grazing angles.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.5f, 2.0f);
+  venue.bind();
+  for (const auto& d : venue.draws()) venue.draw(d);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& venue,
+                                      const gl::Program& shadowProgram) {
+  BeamUpdateStats stats;
+  const int n = static_cast<int>(frame.beams.size());
+  ensureCapacity(n);
+  gpuBeams_.resize(static_cast<size_t>(n));
+  const int size = settings_.lightMapSize;
+  for (int i = 0; i < n; ++i) {
+    const BeamState& b = frame.beams[static_cast<size_t>(i)];
+    const float cutoff = b.optics.cutoffHalfAngleRad();
+    const uint64_t opticsKey = mix(b.opticsKey, 1);  // never 0, the "nothing baked" key
+    if (opticsKeys_[static_cast<size_t>(i)] != opticsKey) {
+      const LightMap map = b.optics.bakeLightMap(size);
+      if (map.size == size && map.cd.size() == static_cast<size_t>(size) * size) {
+        glTextureSubImage3D(lightMaps_.id(), 0, 0, 0, i, size, size, 1, GL_RED, GL_FLOAT, map.cd.data());
+        extents_[static_cast<size_t>(i)] = map.extent;
+      }
+      opticsKeys_[static_cast<size_t>(i)] = opticsKey;
+      ++stats.lightMapsBaked;
+    }
+    const glm::mat4 viewProj = shadowViewProjection(b, venue, cutoff);
+    const uint64_t shadowKey = mix(mix(b.poseKey, std::hash<float>{}(cutoff)), 2);
+    if (shadowKeys_[static_cast<size_t>(i)] != shadowKey) {
+      renderShadow(i, viewProj, venue, shadowProgram);
+      shadowKeys_[static_cast<size_t>(i)] = shadowKey;
+      ++stats.shadowMapsRendered;
+    }
+    const float tanHalfF = std::tan(glm::radians(b.optics.fieldAngleDeg) * 0.5f);
+    GpuBeam& g = gpuBeams_[static_cast<size_t>(i)];
+    g.lensPos = glm::vec4(b.pose.lensPosition, std::cos(cutoff));
+    g.xb = glm::vec4(b.pose.xb, 1.0f / (tanHalfF * extents_[static_cast<size_t>(i)]));
+    g.yb = glm::vec4(b.pose.yb, static_cast<float>(i));
+    g.zb = glm::vec4(b.pose.zb, static_cast<float>(i));
+    g.color = glm::vec4(b.optics.color * b.optics.dimmer, std::tan(cutoff));
+    g.shadowViewProj = viewProj;
+  }
+  if (n > 0)
+    glNamedBufferSubData(ssbo_.id(), 0, static_cast<GLsizeiptr>(sizeof(GpuBeam) * n), gpuBeams_.data());
+  return stats;
+}
+
+void BeamResources::bind(GLuint beamsBinding, GLuint lightMapUnit, GLuint shadowMapUnit) const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, beamsBinding, ssbo_.id());
+  glBindTextureUnit(lightMapUnit, lightMaps_.id());
+  glBindTextureUnit(shadowMapUnit, shadowMaps_.id());
+}
+
+}  // namespace haze

@@ -1,0 +1,68 @@
+// Per-beam GPU data: a light-map layer (I * gobo * gate over the (u, v) plane, from
+// BeamOptics::bakeLightMap), a shadow-map layer (depth from the lens), and one entry of the
+// beams storage buffer that every lighting shader reads. Light maps are re-baked only when a
+// beam's opticsKey changes, shadow maps re-rendered only when its poseKey or cone changes.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include "renderer/gl/objects.h"
+#include "renderer/gpu_venue.h"
+#include "renderer/scene/frame_state.h"
+
+namespace haze {
+
+// Mirrors `struct Beam` in shaders/beams.glsl (std430).
+struct GpuBeam {
+  glm::vec4 lensPos;   // xyz lens position, w = cos(cutoff half-angle)
+  glm::vec4 xb;        // xyz reference axis, w = uv scale: 1 / (tan(F/2) * extent)
+  glm::vec4 yb;        // xyz, w = light-map layer
+  glm::vec4 zb;        // xyz beam axis, w = shadow-map layer
+  glm::vec4 color;     // rgb = dimmer * colour filter, w = tan(cutoff)
+  glm::mat4 shadowViewProj;
+};
+static_assert(sizeof(GpuBeam) == 144, "GpuBeam must match struct Beam in shaders/beams.glsl");
+
+struct BeamResourceSettings {
+  int lightMapSize = 512;
+  int shadowMapSize = 1024;
+};
+
+struct BeamUpdateStats {
+  int lightMapsBaked = 0;
+  int shadowMapsRendered = 0;
+};
+
+class BeamResources {
+ public:
+  explicit BeamResources(const BeamResourceSettings& settings);
+
+  // Brings light maps, shadow maps and the storage buffer up to date with frame.beams.
+  BeamUpdateStats update(const FrameState& frame, const GpuVenue& venue, const gl::Program& shadowProgram);
+
+  void bind(GLuint beamsBinding, GLuint lightMapUnit, GLuint shadowMapUnit) const;
+  int count() const { return static_cast<int>(gpuBeams_.size()); }
+  const std::vector<GpuBeam>& beams() const { return gpuBeams_; }
+  const BeamResourceSettings& settings() const { return settings_; }
+
+ private:
+  void ensureCapacity(int beams);
+  void renderShadow(int layer, const glm::mat4& viewProj, const GpuVenue& venue, const gl::Program& program);
+
+  BeamResourceSettings settings_;
+  int capacity_ = 0;
+  gl::Texture lightMaps_;
+  gl::Texture shadowMaps_;
+  gl::Buffer ssbo_;
+  gl::Framebuffer shadowFbo_{"shadow_fbo"};
+  std::vector<uint64_t> opticsKeys_;   // per layer, what is baked there
+  std::vector<uint64_t> shadowKeys_;
+  std::vector<float> extents_;
+  std::vector<GpuBeam> gpuBeams_;
+};
+
+}  // namespace haze

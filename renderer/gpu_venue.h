@@ -1,0 +1,51 @@
+// The venue on the GPU: one vertex buffer and one index buffer for every primitive (world
+// space, so shadow and surface passes share them), with a draw range and material per primitive.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "renderer/gl/objects.h"
+#include "renderer/scene/venue.h"
+
+namespace haze {
+
+class GpuVenue {
+ public:
+  explicit GpuVenue(const Venue& venue);
+
+  struct Draw {
+    GLsizei indexCount;
+    size_t firstIndexBytes;
+    GLint baseVertex;
+    int material;
+  };
+  struct GpuMaterial {
+    glm::vec4 baseColor;
+    glm::vec3 emissive;
+    int baseColorTexture;  // index into textures(), -1 none
+    int emissiveTexture;
+  };
+
+  // Binds the vertex array; then issue draw(i) for each draw range.
+  void bind() const;
+  void draw(const Draw& d) const;
+  const std::vector<Draw>& draws() const { return draws_; }
+  const std::vector<GpuMaterial>& materials() const { return materials_; }
+  const gl::Texture& texture(int i) const { return textures_[static_cast<size_t>(i)]; }
+  glm::vec3 boundsMin() const { return boundsMin_; }
+  glm::vec3 boundsMax() const { return boundsMax_; }
+
+ private:
+  gl::Buffer vertices_{"venue_vertices"};
+  gl::Buffer indices_{"venue_indices"};
+  gl::VertexArray vao_{"venue_vao"};
+  std::vector<Draw> draws_;
+  std::vector<GpuMaterial> materials_;
+  std::vector<gl::Texture> textures_;
+  glm::vec3 boundsMin_{0.0f}, boundsMax_{0.0f};
+};
+
+}  // namespace haze

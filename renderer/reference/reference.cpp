@@ -1,0 +1,290 @@
+// The reference integrator. In-scattering per beam is marched only over the eye ray's chord
+// through the beam's cone (I_eff is exactly 0 outside), in equal steps of the angle seen from
+// the lens: with D the ray's distance to the lens and t = t_c + D tan(phi),
+// dt / r^2 = dphi / D, so the 1/r^2 peak is integrated exactly and the samples follow the
+// beam's angular structure (I_eff, gobo and shadow edges are all functions of direction seen
+// from the lens). Visibility is sampled at step boundaries and shadow edges are located by
+// bisection; everything else is sampled at step midpoints.
+#include "renderer/reference/reference.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cassert>
+#include <cmath>
+#include <thread>
+
+#include <glm/geometric.hpp>
+
+#include "renderer/reference/cone.h"
+#include "renderer/scene/physics.h"
+
+namespace haze {
+
+namespace {
+
+// A ray closer than this to a lens passes through it: the integral diverges there (a point
+// light seen directly), so the distance is clamped to keep the pixel finite.
+constexpr double kMinLensDistanceM = 1e-6;
+// Shadow rays stop this far short of their target, so the target's own surface never shadows it.
+constexpr float kShadowEndGapM = 1e-4f;
+constexpr int kEdgeBisections = 12;
+// A step whose end values of I_eff differ by more than this fraction is split in 16.
+constexpr float kIntensityJump = 0.2f;
+constexpr int kIntensitySubsteps = 16;
+
+struct ActiveBeam {
+  const BeamState* beam;
+  float cutoffRad;
+};
+
+std::vector<ActiveBeam> activeBeams(const FrameState& frame) {
+  std::vector<ActiveBeam> out;
+  for (const BeamState& b : frame.beams) {
+    if (!b.optics.distribution || !(b.optics.dimmer > 0.0f)) continue;
+    const glm::vec3& c = b.optics.color;
+    if (!(c.r > 0.0f || c.g > 0.0f || c.b > 0.0f)) continue;
+    const float cutoff = b.optics.cutoffHalfAngleRad();
+    if (!(cutoff > 0.0f) || !std::isfinite(cutoff)) continue;
+    // The cone test needs a convex cone; BeamOptics promises at most kMaxCutoffDeg (< 90).
+    out.push_back({&b, std::min(cutoff, 89.9f * kPi / 180.0f)});
+  }
+  return out;
+}
+
+// V(x) for a point x at distance distM from the lens along the unit direction w.
+bool visibleFromLens(const Bvh& bvh, const glm::vec3& lens, const glm::vec3& w, float distM,
+                     const ReferenceOptions& o) {
+  const float tMax = distM - kShadowEndGapM;
+  if (!(tMax > o.lensClearanceM)) return true;
+  return !bvh.anyHit(lens, w, o.lensClearanceM, tMax);
+}
+
+// L_in of one beam along [0, T] of the ray.
+glm::vec3 inScatterOneBeam(const Bvh& bvh, const MediumState& medium, const ActiveBeam& ab,
+                           const glm::vec3& e, const glm::vec3& v, float depthM,
+                           const ReferenceOptions& o) {
+  const BeamState& beam = *ab.beam;
+  const glm::vec3 lens = beam.pose.lensPosition;
+  const ConeInterval chord = intersectCone(e, v, lens, beam.pose.zb, ab.cutoffRad, 0.0, depthM);
+  if (chord.empty()) return glm::vec3(0.0f);
+
+  // Closest approach of the ray's line to the lens: t_c, and distance D.
+  const double ex = e.x, ey = e.y, ez = e.z;
+  const double vx = v.x, vy = v.y, vz = v.z;
+  const double lx = lens.x - ex, ly = lens.y - ey, lz = lens.z - ez;
+  const double tc = lx * vx + ly * vy + lz * vz;
+  const double px = lx - tc * vx, py = ly - tc * vy, pz = lz - tc * vz;
+  const double dist = std::max(std::sqrt(px * px + py * py + pz * pz), kMinLensDistanceM);
+  const double phi0 = std::atan2(chord.t0 - tc, dist);
+  const double phi1 = std::atan2(chord.t1 - tc, dist);
+  const double range = phi1 - phi0;
+  if (!(range > 0.0)) return glm::vec3(0.0f);
+  const double steps = std::max(static_cast<double>(std::max(o.minStepsPerChord, 1)),
+                                std::ceil(range / std::max(double(o.maxStepAngleRad), 1e-7)));
+  const int n = static_cast<int>(std::min(steps, 1e6));
+  const double dphi = range / n;
+  const float sigmaT = medium.extinction();
+
+  auto pointAt = [&](double phi, glm::vec3& x, glm::vec3& w, float& r) {
+    const double t = tc + dist * std::tan(phi);
+    x = glm::vec3(float(ex + t * vx), float(ey + t * vy), float(ez + t * vz));
+    const glm::vec3 d = x - lens;
+    r = glm::length(d);
+    w = r > 0.0f ? d / r : beam.pose.zb;
+    return t;
+  };
+  auto visibleAt = [&](double phi) {
+    glm::vec3 x, w;
+    float r;
+    pointAt(phi, x, w, r);
+    return visibleFromLens(bvh, lens, w, r, o);
+  };
+
+  // sigma_s p(a) I_eff exp(-sigma_t (r + t)) at one angle, without V and the constant 1/D.
+  auto integrand = [&](double phi) {
+    glm::vec3 x, w;
+    float r;
+    const double t = pointAt(phi, x, w, r);
+    const glm::vec3 intensity = beamIntensityTowards(beam, x);
+    if (intensity == glm::vec3(0.0f)) return glm::vec3(0.0f);
+    // cos a = dot(w_in, w_out) with w_in = w (the way the light travels), w_out = -v.
+    const float p = phaseFunction(medium, -glm::dot(w, v));
+    return intensity * (p * std::exp(-sigmaT * (r + static_cast<float>(t))));
+  };
+  auto intensityAt = [&](double phi) {
+    glm::vec3 x, w;
+    float r;
+    pointAt(phi, x, w, r);
+    const glm::vec3 i = beamIntensityTowards(beam, x);
+    return i.r + i.g + i.b;
+  };
+
+  glm::vec3 sum(0.0f);
+  bool visPrev = o.refineShadowEdges ? visibleAt(phi0) : true;
+  float iPrev = o.refineIntensityEdges ? intensityAt(phi0) : 0.0f;
+  for (int k = 0; k < n; ++k) {
+    const double a = phi0 + k * dphi;
+    const double b = a + dphi;
+    // Visible fraction of the step.
+    double visible;
+    if (o.refineShadowEdges) {
+      const bool visNext = visibleAt(b);
+      if (visPrev == visNext) {
+        visible = visPrev ? 1.0 : 0.0;
+      } else {
+        double lo = a, hi = b;  // V(lo) = visPrev, V(hi) = visNext
+        for (int i = 0; i < kEdgeBisections; ++i) {
+          const double mid = 0.5 * (lo + hi);
+          (visibleAt(mid) == visPrev ? lo : hi) = mid;
+        }
+        const double edge = 0.5 * (lo + hi);
+        visible = visPrev ? (edge - a) / dphi : (b - edge) / dphi;
+      }
+      visPrev = visNext;
+    } else {
+      visible = visibleAt(a + 0.5 * dphi) ? 1.0 : 0.0;
+    }
+    // A steep change of I_eff within the step (a gobo edge, a photometric cut-off): sample the
+    // step finely instead of once.
+    int substeps = 1;
+    if (o.refineIntensityEdges) {
+      const float iNext = intensityAt(b);
+      if (std::fabs(iNext - iPrev) > kIntensityJump * std::max(iNext, iPrev))
+        substeps = kIntensitySubsteps;
+      iPrev = iNext;
+    }
+    if (visible <= 0.0) continue;
+    glm::vec3 step(0.0f);
+    for (int s = 0; s < substeps; ++s) step += integrand(a + (s + 0.5) * dphi / substeps);
+    sum += step * static_cast<float>(visible / substeps);
+  }
+  return sum * static_cast<float>(medium.scattering * dphi / dist);
+}
+
+glm::vec3 surfaceRadiance(const Bvh& bvh, const FrameState& frame,
+                          const std::vector<ActiveBeam>& beams, const RayHit& hit,
+                          const glm::vec3& v, const ReferenceOptions& o) {
+  const SurfacePoint s = bvh.surfaceAt(hit);
+  const Venue& venue = bvh.venue();
+  // Two-sided: both normals turned towards the eye.
+  const glm::vec3 ng = glm::dot(s.geometricNormal, v) > 0.0f ? -s.geometricNormal
+                                                               : s.geometricNormal;
+  const glm::vec3 n = glm::dot(s.shadingNormal, ng) < 0.0f ? -s.shadingNormal : s.shadingNormal;
+  const float maxAbs = std::max({std::fabs(s.positionM.x), std::fabs(s.positionM.y),
+                                 std::fabs(s.positionM.z)});
+  // Lift the shadow ray's end off the surface by more than float rounding at this position.
+  const glm::vec3 lifted = s.positionM + ng * (1e-4f + 4e-6f * maxAbs);
+  const float sigmaT = frame.medium.extinction();
+
+  glm::vec3 direct(0.0f);
+  for (const ActiveBeam& ab : beams) {
+    const glm::vec3 lens = ab.beam->pose.lensPosition;
+    const glm::vec3 toLens = lens - s.positionM;
+    if (!(glm::dot(ng, toLens) > 0.0f)) continue;  // the light is behind the surface's plane
+    const float r = glm::length(toLens);
+    if (!(r > 0.0f)) continue;
+    const float cosine = glm::dot(n, toLens / r);
+    if (!(cosine > 0.0f)) continue;
+    const glm::vec3 intensity = beamIntensityTowards(*ab.beam, s.positionM);
+    if (intensity == glm::vec3(0.0f)) continue;
+    const glm::vec3 d = lifted - lens;
+    const float len = glm::length(d);
+    if (len > 0.0f && !visibleFromLens(bvh, lens, d / len, len + kShadowEndGapM, o)) continue;
+    direct += intensity * (cosine * std::exp(-sigmaT * r) / (r * r));
+  }
+  const glm::vec3 albedo = venue.albedo(*s.primitive, s.uv);
+  return albedo / kPi * direct + albedo * frame.medium.ambient +
+         venue.emission(*s.primitive, s.uv);
+}
+
+PixelRadiance radiance(const Bvh& bvh, const FrameState& frame,
+                       const std::vector<ActiveBeam>& beams, const glm::vec3& e,
+                       const glm::vec3& v, const ReferenceOptions& o) {
+  PixelRadiance out;
+  const float far = frame.camera.farM > 0.0f ? frame.camera.farM : 100.0f;
+  const RayHit hit = bvh.closestHit(e, v, 0.0f, far);
+  out.hitSurface = hit.hit();
+  out.depthM = out.hitSurface ? hit.tM : far;
+  const float transmit = std::exp(-frame.medium.extinction() * out.depthM);
+  if (out.hitSurface) {
+    out.surface = surfaceRadiance(bvh, frame, beams, hit, v, o) * transmit;
+  } else {
+    out.background = frame.medium.background * transmit;
+  }
+  if (frame.medium.scattering > 0.0f) {
+    for (const ActiveBeam& ab : beams)
+      out.inScattered += inScatterOneBeam(bvh, frame.medium, ab, e, v, out.depthM, o);
+  }
+  return out;
+}
+
+}  // namespace
+
+glm::vec3 cameraRayDirection(const CameraState& camera, int width, int height, float pixelX,
+                             float pixelY) {
+  glm::vec3 forward = camera.target - camera.position;
+  forward = glm::length(forward) > 0.0f ? glm::normalize(forward) : glm::vec3(0.0f, 0.0f, -1.0f);
+  glm::vec3 right = glm::cross(forward, camera.up);
+  if (!(glm::length(right) > 1e-6f)) {
+    // up parallel to the view: any perpendicular will do, pick one deterministically.
+    right = glm::cross(forward, std::fabs(forward.y) < 0.9f ? glm::vec3(0, 1, 0)
+                                                            : glm::vec3(1, 0, 0));
+  }
+  right = glm::normalize(right);
+  const glm::vec3 up = glm::cross(right, forward);
+  const float tanHalf = std::tan(0.5f * camera.fovYDeg * kPi / 180.0f);
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  const float sx = (2.0f * pixelX / static_cast<float>(width) - 1.0f) * tanHalf * aspect;
+  const float sy = (1.0f - 2.0f * pixelY / static_cast<float>(height)) * tanHalf;
+  return glm::normalize(forward + sx * right + sy * up);
+}
+
+PixelRadiance radianceAlongRay(const Bvh& bvh, const FrameState& frame, const glm::vec3& origin,
+                               const glm::vec3& dir, const ReferenceOptions& options) {
+  return radiance(bvh, frame, activeBeams(frame), origin, dir, options);
+}
+
+ReferenceImages renderReferenceImages(const Bvh& bvh, const FrameState& frame, int width,
+                                      int height, const ReferenceOptions& options) {
+  assert(width > 0 && height > 0 && "renderReference: validate the image size before calling");
+  ReferenceImages out;
+  const size_t count = static_cast<size_t>(width) * static_cast<size_t>(height);
+  for (ImageRGB* img : {&out.total, &out.surface, &out.inScattered}) {
+    img->width = width;
+    img->height = height;
+    img->pixels.assign(count, glm::vec3(0.0f));
+  }
+  out.depthM.assign(count, 0.0f);
+  const std::vector<ActiveBeam> beams = activeBeams(frame);
+
+  std::atomic<int> nextRow{0};
+  auto worker = [&] {
+    for (int j = nextRow++; j < height; j = nextRow++) {
+      for (int i = 0; i < width; ++i) {
+        const glm::vec3 dir = cameraRayDirection(frame.camera, width, height, i + 0.5f, j + 0.5f);
+        const PixelRadiance px = radiance(bvh, frame, beams, frame.camera.position, dir, options);
+        const size_t at = static_cast<size_t>(j) * width + i;
+        out.total.pixels[at] = px.total();
+        out.surface.pixels[at] = px.surface + px.background;
+        out.inScattered.pixels[at] = px.inScattered;
+        out.depthM[at] = px.depthM;
+      }
+    }
+  };
+  int threads = options.threads > 0 ? options.threads
+                                    : static_cast<int>(std::thread::hardware_concurrency());
+  threads = std::clamp(threads, 1, std::max(1, height));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  return out;
+}
+
+ImageRGB renderReference(const Venue& venue, const FrameState& frame, int width, int height,
+                         const ReferenceOptions& options) {
+  const Bvh bvh(venue);
+  return std::move(renderReferenceImages(bvh, frame, width, height, options).total);
+}
+
+}  // namespace haze

@@ -1,0 +1,76 @@
+// The CPU reference integrator: physics.md's "What a pixel is", computed by brute force with
+// exact shadow rays (against a Bvh of the venue's triangles) and exact I_eff lookups. It is the
+// oracle every fast path of the GPU renderer is measured against; docs/reference.md says how it
+// marches and how converged it is.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "renderer/reference/bvh.h"
+#include "renderer/scene/frame_state.h"
+#include "renderer/scene/image.h"
+#include "renderer/scene/venue.h"
+
+namespace haze {
+
+struct ReferenceOptions {
+  // The march steps uniformly in the angle that the step subtends at the beam's lens (the
+  // beam's own angular resolution; it also absorbs the 1/r^2 peak near the lens). This is the
+  // largest such step [rad]; the default 0.1 degree resolves a 2-degree beam with 20 steps.
+  float maxStepAngleRad = 0.1f * 3.14159265358979f / 180.0f;
+  // At least this many steps over each beam's chord, however narrow it looks from the lens.
+  int minStepsPerChord = 64;
+  // Shadow edges along the ray are found by bisection (12 halvings of the step) instead of
+  // being left to the midpoint rule: a hard edge then costs ~1/4096 of a step, not up to 1/2.
+  bool refineShadowEdges = true;
+  // Steps across which I_eff jumps by more than 20 % (gobo edges, a photometric file's cut-off)
+  // are sampled 16 times instead of once.
+  bool refineIntensityEdges = true;
+  // Geometry closer than this to a beam's lens casts no shadow (the GPU's shadow-map near
+  // plane, or a fixture's own housing in the venue). 0 = every triangle counts.
+  float lensClearanceM = 0.0f;
+  // Worker threads; 0 = one per hardware thread.
+  int threads = 0;
+};
+
+// One pixel's radiance, in parts (cd/m^2 per linear RGB channel).
+struct PixelRadiance {
+  glm::vec3 surface{0.0f};      // L_surf * exp(-sigma_t T), 0 where no surface is hit
+  glm::vec3 inScattered{0.0f};  // L_in over [0, T]
+  glm::vec3 background{0.0f};   // background * exp(-sigma_t T) where no surface is hit
+  float depthM = 0.0f;          // T
+  bool hitSurface = false;
+  glm::vec3 total() const { return surface + inScattered + background; }
+};
+
+// The unit direction of pixel (i, j)'s ray through its centre, j = 0 the top row
+// (physics.md's pinhole camera). Fractional pixel coordinates are allowed: (i, j) = (0, 0) is
+// the top-left corner of the image, (W / 2, H / 2) the centre.
+glm::vec3 cameraRayDirection(const CameraState& camera, int width, int height, float pixelX,
+                             float pixelY);
+
+// The radiance along one ray (dir unit) from origin, through the frame's medium and beams,
+// stopping at the first surface or camera.farM.
+PixelRadiance radianceAlongRay(const Bvh& bvh, const FrameState& frame, const glm::vec3& origin,
+                               const glm::vec3& dir, const ReferenceOptions& options = {});
+
+// The whole image, with L_surf and L_in apart (the accuracy metric of physics.md looks at the
+// pixels where L_in is above 1 % of its maximum).
+struct ReferenceImages {
+  ImageRGB total;
+  ImageRGB surface;      // PixelRadiance::surface + background
+  ImageRGB inScattered;  // PixelRadiance::inScattered
+  std::vector<float> depthM;  // T per pixel, row-major like the images
+};
+// width and height must be positive (the caller validates user input).
+ReferenceImages renderReferenceImages(const Bvh& bvh, const FrameState& frame, int width,
+                                      int height, const ReferenceOptions& options = {});
+
+// The oracle's image: L per pixel. Builds a Bvh of the venue each call; keep a Bvh and call
+// renderReferenceImages to render many frames of one venue.
+ImageRGB renderReference(const Venue& venue, const FrameState& frame, int width, int height,
+                         const ReferenceOptions& options = {});
+
+}  // namespace haze

@@ -1,0 +1,175 @@
+#include "renderer/renderer.h"
+
+#include <chrono>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "renderer/beam_resources.h"
+#include "renderer/gl/program.h"
+#include "renderer/gpu_venue.h"
+
+namespace haze {
+namespace {
+
+constexpr GLuint kBeamsBinding = 0, kLightMapUnit = 1, kShadowMapUnit = 2, kBaseTexUnit = 3, kEmissiveTexUnit = 4;
+
+double msSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+glm::mat4 cameraViewProjection(const CameraState& c, int width, int height) {
+  const glm::mat4 view = glm::lookAt(c.position, c.target, c.up);
+  const glm::mat4 proj = glm::perspective(glm::radians(c.fovYDeg), static_cast<float>(width) / height,
+                                          c.nearM, c.farM);
+  return proj * view;
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+  GpuVenue venue;
+  BeamResources beams;
+  gl::Program shadowProgram, surfaceProgram, postProgram;
+  gl::Texture radiance, depth, display;
+  gl::Framebuffer sceneFbo{"scene_fbo"}, displayFbo{"display_fbo"};
+  gl::VertexArray emptyVao{"fullscreen_vao"};
+
+  Impl(const Venue& v, const RenderSettings& s)
+      : venue(v), beams(BeamResourceSettings{s.lightMapSize, s.shadowMapSize}) {}
+};
+
+Renderer::Renderer(std::unique_ptr<Impl> impl, const RenderSettings& settings)
+    : impl_(std::move(impl)), settings_(settings) {}
+Renderer::~Renderer() = default;
+
+Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const RenderSettings& settings) {
+  if (settings.width <= 0 || settings.height <= 0 || settings.width > 16384 || settings.height > 16384)
+    return Error{"", "", "image size must be between 1x1 and 16384x16384"};
+  auto impl = std::make_unique<Impl>(venue, settings);
+  auto shadow = gl::buildProgram({.label = "shadow_depth", .vertex = "venue.vert.glsl"});
+  if (!shadow) return shadow.error();
+  auto surface = gl::buildProgram({.label = "surface", .vertex = "venue.vert.glsl", .fragment = "surface.frag.glsl"});
+  if (!surface) return surface.error();
+  auto post = gl::buildProgram({.label = "post", .vertex = "fullscreen.vert.glsl", .fragment = "post.frag.glsl"});
+  if (!post) return post.error();
+  impl->shadowProgram = std::move(*shadow);
+  impl->surfaceProgram = std::move(*surface);
+  impl->postProgram = std::move(*post);
+
+  const int w = settings.width, h = settings.height;
+  impl->radiance = gl::Texture(GL_TEXTURE_2D, "radiance");
+  glTextureStorage2D(impl->radiance.id(), 1, GL_RGBA32F, w, h);
+  glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  impl->depth = gl::Texture(GL_TEXTURE_2D, "scene_depth");
+  glTextureStorage2D(impl->depth.id(), 1, GL_DEPTH_COMPONENT32F, w, h);
+  glNamedFramebufferTexture(impl->sceneFbo.id(), GL_COLOR_ATTACHMENT0, impl->radiance.id(), 0);
+  glNamedFramebufferTexture(impl->sceneFbo.id(), GL_DEPTH_ATTACHMENT, impl->depth.id(), 0);
+  impl->display = gl::Texture(GL_TEXTURE_2D, "display");
+  glTextureStorage2D(impl->display.id(), 1, GL_RGBA8, w, h);
+  glNamedFramebufferTexture(impl->displayFbo.id(), GL_COLOR_ATTACHMENT0, impl->display.id(), 0);
+  if (glCheckNamedFramebufferStatus(impl->sceneFbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
+      glCheckNamedFramebufferStatus(impl->displayFbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    return Error{"", "", "the GL driver cannot render to RGBA32F and DEPTH32F targets"};
+  return std::unique_ptr<Renderer>(new Renderer(std::move(impl), settings));
+}
+
+void Renderer::render(const FrameState& frame) {
+  Impl& m = *impl_;
+  times_ = {};
+  auto t0 = std::chrono::steady_clock::now();
+  const BeamUpdateStats stats = m.beams.update(frame, m.venue, m.shadowProgram);
+  glFinish();  // so the pass times below are the passes' own (llvmpipe renders on glFinish)
+  times_.shadowMapsMs = msSince(t0);
+  times_.shadowMapsRendered = stats.shadowMapsRendered;
+  times_.lightMapsBaked = stats.lightMapsBaked;
+
+  t0 = std::chrono::steady_clock::now();
+  const int w = settings_.width, h = settings_.height;
+  const MediumState& med = frame.medium;
+  const float sigmaT = med.extinction();
+  glBindFramebuffer(GL_FRAMEBUFFER, m.sceneFbo.id());
+  glViewport(0, 0, w, h);
+  // Where no surface is hit the ray ends at the camera's far distance (physics.md).
+  const glm::vec4 background(med.background * std::exp(-sigmaT * frame.camera.farM), 1.0f);
+  glClearNamedFramebufferfv(m.sceneFbo.id(), GL_COLOR, 0, glm::value_ptr(background));
+  const float one = 1.0f;
+  glClearNamedFramebufferfv(m.sceneFbo.id(), GL_DEPTH, 0, &one);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+
+  const GLuint prog = m.surfaceProgram.id();
+  glUseProgram(prog);
+  const glm::mat4 viewProj = cameraViewProjection(frame.camera, w, h);
+  glProgramUniformMatrix4fv(prog, 0, 1, GL_FALSE, glm::value_ptr(viewProj));
+  glProgramUniform3fv(prog, 1, 1, glm::value_ptr(frame.camera.position));
+  glProgramUniform1f(prog, 2, sigmaT);
+  glProgramUniform3fv(prog, 3, 1, glm::value_ptr(med.ambient));
+  glProgramUniform1i(prog, 8, m.beams.count());
+  m.beams.bind(kBeamsBinding, kLightMapUnit, kShadowMapUnit);
+  m.venue.bind();
+  for (const GpuVenue::Draw& d : m.venue.draws()) {
+    const GpuVenue::GpuMaterial& mat = m.venue.materials()[static_cast<size_t>(d.material)];
+    glProgramUniform4fv(prog, 4, 1, glm::value_ptr(mat.baseColor));
+    glProgramUniform3fv(prog, 5, 1, glm::value_ptr(mat.emissive));
+    glProgramUniform1i(prog, 6, mat.baseColorTexture >= 0);
+    glProgramUniform1i(prog, 7, mat.emissiveTexture >= 0);
+    if (mat.baseColorTexture >= 0) glBindTextureUnit(kBaseTexUnit, m.venue.texture(mat.baseColorTexture).id());
+    if (mat.emissiveTexture >= 0) glBindTextureUnit(kEmissiveTexUnit, m.venue.texture(mat.emissiveTexture).id());
+    m.venue.draw(d);
+  }
+  glFinish();
+  times_.surfacesMs = msSince(t0);
+}
+
+ImageRGB Renderer::readRadiance() const {
+  const int w = settings_.width, h = settings_.height;
+  std::vector<glm::vec4> rgba(static_cast<size_t>(w) * h);
+  glGetTextureImage(impl_->radiance.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(glm::vec4)),
+                    rgba.data());
+  ImageRGB img;
+  img.width = w;
+  img.height = h;
+  img.pixels.resize(rgba.size());
+  for (int y = 0; y < h; ++y)  // GL's row 0 is the bottom
+    for (int x = 0; x < w; ++x) img.at(x, y) = glm::vec3(rgba[static_cast<size_t>(h - 1 - y) * w + x]);
+  return img;
+}
+
+void Renderer::drawDisplay(const DisplaySettings& display, unsigned int framebuffer, int x, int y, int width,
+                           int height) {
+  Impl& m = *impl_;
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(x, y, width, height);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  glUseProgram(m.postProgram.id());
+  glProgramUniform1f(m.postProgram.id(), 0, std::exp2(display.exposureEv) / DisplaySettings::kKeyNits);
+  glBindTextureUnit(0, m.radiance.id());
+  glBindVertexArray(m.emptyVao.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+std::vector<unsigned char> Renderer::readDisplay(const DisplaySettings& display) {
+  Impl& m = *impl_;
+  const int w = settings_.width, h = settings_.height;
+  const auto t0 = std::chrono::steady_clock::now();
+  drawDisplay(display, m.displayFbo.id(), 0, 0, w, h);
+  std::vector<unsigned char> rgba(static_cast<size_t>(w) * h * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(m.display.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(rgba.size()), rgba.data());
+  std::vector<unsigned char> rgb(static_cast<size_t>(w) * h * 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c)
+        rgb[(static_cast<size_t>(y) * w + x) * 3 + c] = rgba[(static_cast<size_t>(h - 1 - y) * w + x) * 4 + c];
+  times_.postMs = msSince(t0);
+  return rgb;
+}
+
+}  // namespace haze

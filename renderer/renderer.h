@@ -1,0 +1,59 @@
+// The GPU renderer: takes a Venue once and a FrameState per frame, draws into a float radiance
+// target (physics.md's L per pixel), and encodes it for display. Passes: shadow maps (cached per
+// beam), surfaces, volumetric beams, post. Needs a current OpenGL 4.5 context (renderer/context.h).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "fixtures/result.h"
+#include "renderer/scene/frame_state.h"
+#include "renderer/scene/image.h"
+#include "renderer/scene/venue.h"
+
+namespace haze {
+
+struct RenderSettings {
+  int width = 1280;
+  int height = 720;
+  int lightMapSize = 512;
+  int shadowMapSize = 1024;
+};
+
+struct DisplaySettings {
+  // Display value = L * 2^exposureEv / kKeyNits before the tone curve: at EV 0 a surface of
+  // 50 cd/m^2 maps to 1 (a lit stage deck), so cues compare at one fixed exposure.
+  float exposureEv = 0.0f;
+  static constexpr float kKeyNits = 50.0f;
+};
+
+struct PassTimes {
+  double shadowMapsMs = 0, surfacesMs = 0, beamsMs = 0, postMs = 0;
+  int shadowMapsRendered = 0, lightMapsBaked = 0;
+};
+
+class Renderer {
+ public:
+  static Result<std::unique_ptr<Renderer>> create(const Venue& venue, const RenderSettings& settings);
+  ~Renderer();
+
+  void render(const FrameState& frame);
+  // The radiometric image of the last render, row 0 at the top.
+  ImageRGB readRadiance() const;
+  // The display encoding (8-bit sRGB, row 0 at the top) of the last render.
+  std::vector<unsigned char> readDisplay(const DisplaySettings& display);
+  // Draws the display encoding of the last render into the current framebuffer's viewport
+  // (the window's back buffer in the GUI).
+  void drawDisplay(const DisplaySettings& display, unsigned int framebuffer, int x, int y, int width, int height);
+  const PassTimes& lastTimes() const { return times_; }
+  const RenderSettings& settings() const { return settings_; }
+
+ private:
+  struct Impl;
+  explicit Renderer(std::unique_ptr<Impl> impl, const RenderSettings& settings);
+  std::unique_ptr<Impl> impl_;
+  RenderSettings settings_;
+  PassTimes times_;
+};
+
+}  // namespace haze

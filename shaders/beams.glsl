@@ -1,0 +1,45 @@
+// Beams as every lighting shader sees them: the storage buffer written by
+// renderer/beam_resources.cpp (struct GpuBeam), the light-map array (I * gobo * gate over the
+// (u, v) plane of physics.md) and the shadow-map array (depth from each lens).
+const float PI = 3.14159265358979323846;
+
+struct Beam {
+  vec4 lensPos;   // xyz lens position, w = cos(cutoff half-angle)
+  vec4 xb;        // xyz reference axis, w = 1 / (tan(F/2) * light-map extent)
+  vec4 yb;        // xyz, w = light-map layer
+  vec4 zb;        // xyz beam axis, w = shadow-map layer
+  vec4 color;     // rgb = dimmer * colour filter, w = tan(cutoff)
+  mat4 shadowViewProj;
+};
+
+layout(std430, binding = 0) readonly buffer Beams { Beam beams[]; };
+layout(binding = 1) uniform sampler2DArray uLightMaps;
+layout(binding = 2) uniform sampler2DArrayShadow uShadowMaps;
+
+// I_eff (cd per channel) towards world point x, without visibility (physics.md); wl is the
+// unit direction the light travels, r the distance from the lens.
+vec3 beamIntensity(Beam b, vec3 x, out vec3 wl, out float r) {
+  vec3 d = x - b.lensPos.xyz;
+  r = max(length(d), 1e-6);
+  wl = d / r;
+  float cz = dot(wl, b.zb.xyz);
+  if (cz <= b.lensPos.w) return vec3(0.0);
+  vec2 uv = vec2(dot(wl, b.xb.xyz), dot(wl, b.yb.xyz)) / cz * b.xb.w;
+  float cd = texture(uLightMaps, vec3(uv * 0.5 + 0.5, b.yb.w)).r;
+  return cd * b.color.rgb;
+}
+
+// V(x): 1 where the lens sees x, 0 in shadow; hardware 2x2 PCF plus four taps around it.
+float beamVisibility(Beam b, vec3 x) {
+  vec4 c = b.shadowViewProj * vec4(x, 1.0);
+  if (c.w <= 0.0) return 1.0;
+  vec3 s = c.xyz / c.w * 0.5 + 0.5;
+  if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
+  vec2 texel = 1.0 / vec2(textureSize(uShadowMaps, 0).xy);
+  float v = texture(uShadowMaps, vec4(s.xy, b.zb.w, s.z)) * 0.5;
+  v += texture(uShadowMaps, vec4(s.xy + vec2(0.5, 0.5) * texel, b.zb.w, s.z)) * 0.125;
+  v += texture(uShadowMaps, vec4(s.xy + vec2(-0.5, 0.5) * texel, b.zb.w, s.z)) * 0.125;
+  v += texture(uShadowMaps, vec4(s.xy + vec2(0.5, -0.5) * texel, b.zb.w, s.z)) * 0.125;
+  v += texture(uShadowMaps, vec4(s.xy + vec2(-0.5, -0.5) * texel, b.zb.w, s.z)) * 0.125;
+  return v;
+}

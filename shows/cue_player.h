@@ -1,0 +1,56 @@
+// CuePlayer: the clock-driven face of cue playback for the GUI and live playback. It is given the
+// time (seconds on any monotonic clock) and never sleeps; ask for state(now) every frame.
+//   GO       the next cue, fading from whatever is on stage now (mid-fade included) with the
+//            next cue's delay and fade; arms that cue's follow.
+//   BACK     the previous cue with that cue's times (arms no follow).
+//   GOTO N   from whatever is on stage now to cue N's tracked state with cue N's times; arms
+//            cue N's follow.
+//   follow   a cue with follow s makes the next cue GO by itself s seconds after its delay + fade
+//            have finished. Follows fire at their exact times, however seldom the clock is read,
+//            so a follow chain plays the same at 5 or 500 frames per second.
+#pragma once
+
+#include <optional>
+
+#include "shows/playback.h"
+
+namespace haze {
+
+class CuePlayer {
+ public:
+  // The show, profiles and list must outlive the player. Before the first GO every fixture is at
+  // its defaults and no cue is active.
+  CuePlayer(const Show& show, const ProfileSet& profiles, const CueList& list);
+
+  // Each returns false (and changes nothing) when there is no such cue.
+  bool go(double nowS);
+  bool back(double nowS);
+  bool gotoCue(size_t cueIndex, double nowS);
+  // Puts cue cueIndex's full state on stage at once, as if its fade had long finished, with no
+  // follow armed (loading a show at a cue, or `haze state --follow`).
+  bool jumpTo(size_t cueIndex, double nowS);
+
+  // Fires the follows due by nowS, then returns the stage at nowS.
+  StageState state(double nowS);
+  // Fires the follows due by nowS.
+  void update(double nowS);
+
+  std::optional<size_t> currentCue() const { return current_; }  // the cue last gone into
+  bool fading(double nowS) const;                                   // delay or fade under way
+  std::optional<double> nextFollowAtS() const { return followAtS_; }
+
+ private:
+  void start(size_t cueIndex, double atS, bool armFollow);
+  StageState stageAt(double nowS) const;
+
+  const Show& show_;
+  const ProfileSet& profiles_;
+  const CueList& list_;
+  StageState from_, to_;
+  CueTiming timing_;
+  double goAtS_ = 0.0;
+  std::optional<size_t> current_;
+  std::optional<double> followAtS_;
+};
+
+}  // namespace haze

@@ -1,0 +1,110 @@
+// The tracking model of show-format.md as pure functions: tracked states by laying each cue's
+// values over the state before it, and the crossfade between two states at a moment after GO
+// (delay, then a linear fade of continuous attributes; the gobo switches when the fade starts).
+#include "shows/playback.h"
+
+#include <algorithm>
+
+#include "shows/cue_number.h"
+
+namespace haze {
+
+namespace {
+
+void overlay(Attributes& a, const CueValues& v) {
+  if (v.intensity) a.intensity = *v.intensity;
+  if (v.panDeg) a.panDeg = *v.panDeg;
+  if (v.tiltDeg) a.tiltDeg = *v.tiltDeg;
+  if (v.color) a.color = *v.color;
+  if (v.zoomDeg) a.zoomDeg = *v.zoomDeg;
+  if (v.gobo) a.gobo = *v.gobo;
+  if (v.goboRotationDeg) a.goboRotationDeg = *v.goboRotationDeg;
+  if (v.iris) a.iris = *v.iris;
+}
+
+float lerp(float a, float b, float f) { return a + (b - a) * f; }
+
+}  // namespace
+
+StageState defaultState(const Show& show) {
+  StageState s;
+  for (const FixtureDef& f : show.fixtures) s[f.id] = Attributes{};
+  return s;
+}
+
+StageState trackedState(const Show& show, const ProfileSet& /*profiles*/, const CueList& list, size_t cueIndex) {
+  assert(cueIndex < list.cues.size() && "trackedState: cue index past the end of the list; use findCue");
+  StageState s = defaultState(show);
+  for (size_t i = 0; i <= cueIndex && i < list.cues.size(); ++i)
+    for (const auto& [id, v] : list.cues[i].values) {
+      auto it = s.find(id);
+      if (it != s.end()) overlay(it->second, v);  // values for unknown ids: validation reports them
+    }
+  return s;
+}
+
+double fadeProgress(const CueTiming& t, double secondsSinceGo) {
+  if (secondsSinceGo < t.delayS) return -1.0;
+  if (t.fadeS <= 0.0) return 1.0;
+  return std::clamp((secondsSinceGo - t.delayS) / t.fadeS, 0.0, 1.0);
+}
+
+Attributes blendAttributes(const Attributes& from, const Attributes& to, double progress,
+                           std::optional<float> fieldAngleDeg) {
+  if (progress < 0.0) return from;
+  if (progress >= 1.0) return to;
+  float f = static_cast<float>(progress);
+  Attributes a = to;  // discrete attributes (gobo) already switched: the fade has started
+  a.intensity = lerp(from.intensity, to.intensity, f);
+  a.panDeg = lerp(from.panDeg, to.panDeg, f);
+  a.tiltDeg = lerp(from.tiltDeg, to.tiltDeg, f);
+  a.color = from.color + (to.color - from.color) * f;
+  a.goboRotationDeg = lerp(from.goboRotationDeg, to.goboRotationDeg, f);
+  a.iris = lerp(from.iris, to.iris, f);
+  // An unset zoom means the profile's field angle: fade through that number when one side is set.
+  if (from.zoomDeg != to.zoomDeg) {
+    std::optional<float> z0 = from.zoomDeg ? from.zoomDeg : fieldAngleDeg;
+    std::optional<float> z1 = to.zoomDeg ? to.zoomDeg : fieldAngleDeg;
+    if (z0 && z1) a.zoomDeg = lerp(*z0, *z1, f);  // without a profile the zoom snaps with the gobo
+  }
+  return a;
+}
+
+StageState blendStates(const Show& show, const ProfileSet& profiles, const StageState& from, const StageState& to,
+                       double progress) {
+  if (progress < 0.0) return from;
+  if (progress >= 1.0) return to;
+  StageState out = to;
+  for (auto& [id, a] : out) {
+    auto src = from.find(id);
+    if (src == from.end()) continue;
+    std::optional<float> field;
+    if (const FixtureDef* f = show.findFixture(id)) {
+      auto p = profiles.find(f->profile);
+      if (p != profiles.end() && p->second) field = p->second->fieldAngleDeg;
+    }
+    a = blendAttributes(src->second, a, progress, field);
+  }
+  return out;
+}
+
+StageState stateAt(const Show& show, const ProfileSet& profiles, const CueList& list, size_t cueIndex,
+                   double secondsSinceGo) {
+  assert(cueIndex < list.cues.size() && "stateAt: cue index past the end of the list; use findCue");
+  StageState from = cueIndex == 0 ? defaultState(show) : trackedState(show, profiles, list, cueIndex - 1);
+  StageState to = trackedState(show, profiles, list, cueIndex);
+  const Cue& cue = list.cues[cueIndex];
+  return blendStates(show, profiles, from, to, fadeProgress(CueTiming{cue.delayS, cue.fadeS}, secondsSinceGo));
+}
+
+Result<size_t> findCue(const CueList& list, const std::string& number) {
+  if (isCueNumber(number))
+    for (size_t i = 0; i < list.cues.size(); ++i)
+      if (isCueNumber(list.cues[i].number) && compareCueNumbers(list.cues[i].number, number) == 0) return i;
+  std::string numbers;
+  for (const Cue& c : list.cues) numbers += (numbers.empty() ? "" : ", ") + c.number;
+  return Error{"", "", "cue list \"" + list.name + "\" has no cue \"" + number + "\"; its cues are: " +
+                           (numbers.empty() ? "(none)" : numbers)};
+}
+
+}  // namespace haze

@@ -1,0 +1,575 @@
+// Reading a show file: JSON text -> Show. Every structural problem (wrong type, missing key,
+// unknown key, a value outside a range that needs no profile, negative times, a bad cue number)
+// is collected with its JSON pointer, so `haze validate` can list them all at once. Checks that
+// need profiles or compare parts of the show with each other live in show_validate.cpp.
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "shows/cue_number.h"
+#include "shows/show_json.h"
+
+namespace haze {
+
+namespace {
+
+using json = nlohmann::json;
+
+// Any number a show holds fits comfortably here; larger ones are typos or hostile input (and
+// would overflow the floats the model keeps).
+constexpr double kMaxMagnitude = 1e9;
+
+struct TooDeep {};
+
+const char* typeName(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return "a boolean";
+    case json::value_t::string: return "a string";
+    case json::value_t::array: return "an array";
+    case json::value_t::object: return "an object";
+    case json::value_t::discarded: return "nothing";
+    default: return "a number";
+  }
+}
+
+std::string numberText(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// Collects problems while walking the document; each read reports what it expected.
+class Reader {
+ public:
+  Reader(std::string file, std::vector<Error>& problems) : file_(std::move(file)), problems_(problems) {}
+
+  void problem(const std::string& ptr, std::string message) {
+    problems_.push_back(Error{file_, ptr, std::move(message)});
+  }
+
+  // The member, or null when absent (a problem when required).
+  const json* member(const json& obj, const std::string& ptr, const char* key, bool required) {
+    auto it = obj.find(key);
+    if (it == obj.end()) {
+      if (required) problem(ptr + "/" + key, std::string("missing required key \"") + key + "\"");
+      return nullptr;
+    }
+    return &*it;
+  }
+
+  void onlyKeys(const json& obj, const std::string& ptr, std::initializer_list<const char*> keys) {
+    for (auto it = obj.begin(); it != obj.end(); ++it) {
+      bool known = false;
+      for (const char* k : keys) known = known || it.key() == k;
+      if (known) continue;
+      std::string list;
+      for (const char* k : keys) list += std::string(list.empty() ? "" : ", ") + k;
+      problem(ptr + "/" + pointerToken(it.key()),
+              "unknown key \"" + it.key() + "\"; expected one of: " + list);
+    }
+  }
+
+  bool isObject(const json& j, const std::string& ptr, const char* what) {
+    if (j.is_object()) return true;
+    problem(ptr, std::string("expected ") + what + " (an object), got " + typeName(j));
+    return false;
+  }
+
+  bool isArray(const json& j, const std::string& ptr, const char* what) {
+    if (j.is_array()) return true;
+    problem(ptr, std::string("expected ") + what + " (an array), got " + typeName(j));
+    return false;
+  }
+
+  // A number within [lo, hi] (each bound optional through +-infinity); false (and a problem) when not.
+  bool number(const json& j, const std::string& ptr, double lo, double hi, const char* what, double& out) {
+    if (!j.is_number()) {
+      problem(ptr, std::string("expected ") + what + " (a number), got " + typeName(j));
+      return false;
+    }
+    double v = j.get<double>();
+    if (!std::isfinite(v) || std::fabs(v) > kMaxMagnitude) {
+      problem(ptr, std::string("expected ") + what + ", got a number too large to be meant");
+      return false;
+    }
+    if (v < lo || v > hi) {
+      std::string range;
+      if (std::isfinite(lo) && std::isfinite(hi))
+        range = "from " + numberText(lo) + " to " + numberText(hi);
+      else if (std::isfinite(lo))
+        range = lo == 0 ? "that is not negative" : "of at least " + numberText(lo);
+      else
+        range = "of at most " + numberText(hi);
+      problem(ptr, std::string("expected ") + what + " " + range + ", got " + numberText(v));
+      return false;
+    }
+    out = v;
+    return true;
+  }
+
+  bool numberMember(const json& obj, const std::string& ptr, const char* key, bool required,
+                    double lo, double hi, const char* what, float& out) {
+    const json* j = member(obj, ptr, key, required);
+    double v = 0;
+    if (!j || !number(*j, ptr + "/" + key, lo, hi, what, v)) return false;
+    out = static_cast<float>(v);
+    return true;
+  }
+
+  bool integer(const json& j, const std::string& ptr, long long lo, long long hi, const char* what, int& out) {
+    bool isInt = j.is_number_integer();
+    if (!isInt && j.is_number_float()) {
+      double d = j.get<double>();
+      isInt = std::isfinite(d) && std::floor(d) == d && std::fabs(d) < 1e15;
+    }
+    if (!isInt) {
+      problem(ptr, std::string("expected ") + what + " (a whole number), got " +
+                       (j.is_number() ? "a fraction" : typeName(j)));
+      return false;
+    }
+    long long v = 0;
+    if (j.is_number_unsigned()) {
+      unsigned long long u = j.get<unsigned long long>();
+      v = u > static_cast<unsigned long long>(LLONG_MAX) ? LLONG_MAX : static_cast<long long>(u);
+    } else if (j.is_number_integer()) {
+      v = j.get<long long>();
+    } else {
+      v = static_cast<long long>(j.get<double>());
+    }
+    if (v < lo || v > hi) {
+      problem(ptr, std::string("expected ") + what + " from " + std::to_string(lo) + " to " +
+                       std::to_string(hi) + ", got " + std::to_string(v));
+      return false;
+    }
+    out = static_cast<int>(v);
+    return true;
+  }
+
+  bool string(const json& j, const std::string& ptr, const char* what, std::string& out, bool nonEmpty) {
+    if (!j.is_string()) {
+      problem(ptr, std::string("expected ") + what + " (a string), got " + typeName(j));
+      return false;
+    }
+    if (nonEmpty && j.get_ref<const std::string&>().empty()) {
+      problem(ptr, std::string("expected ") + what + ", got an empty string");
+      return false;
+    }
+    out = j.get<std::string>();
+    return true;
+  }
+
+  bool stringMember(const json& obj, const std::string& ptr, const char* key, bool required,
+                    const char* what, std::string& out, bool nonEmpty) {
+    const json* j = member(obj, ptr, key, required);
+    return j && string(*j, ptr + "/" + key, what, out, nonEmpty);
+  }
+
+  // [x, y, z] with each component in [lo, hi].
+  bool vec3(const json& j, const std::string& ptr, double lo, double hi, const char* what, glm::vec3& out) {
+    if (!j.is_array() || j.size() != 3) {
+      problem(ptr, std::string("expected ") + what + " as an array of 3 numbers, got " +
+                       (j.is_array() ? "an array of " + std::to_string(j.size()) : std::string(typeName(j))));
+      return false;
+    }
+    glm::vec3 v{0.0f};
+    bool ok = true;
+    for (int i = 0; i < 3; ++i) {
+      double c = 0;
+      ok = number(j[static_cast<size_t>(i)], ptr + "/" + std::to_string(i), lo, hi, what, c) && ok;
+      v[i] = static_cast<float>(c);
+    }
+    if (ok) out = v;
+    return ok;
+  }
+
+  bool vec3Member(const json& obj, const std::string& ptr, const char* key, bool required,
+                  double lo, double hi, const char* what, glm::vec3& out) {
+    const json* j = member(obj, ptr, key, required);
+    return j && vec3(*j, ptr + "/" + key, lo, hi, what, out);
+  }
+
+  // A number (grey) or [r, g, b], each not negative.
+  bool greyOrRgb(const json& j, const std::string& ptr, const char* what, glm::vec3& out) {
+    if (j.is_number()) {
+      double v = 0;
+      if (!number(j, ptr, 0.0, kMaxMagnitude, what, v)) return false;
+      out = glm::vec3(static_cast<float>(v));
+      return true;
+    }
+    if (j.is_array()) return vec3(j, ptr, 0.0, kMaxMagnitude, what, out);
+    problem(ptr, std::string("expected ") + what + " as a number or [r, g, b], got " + typeName(j));
+    return false;
+  }
+
+ private:
+  std::string file_;
+  std::vector<Error>& problems_;
+};
+
+constexpr double kInf = INFINITY;
+
+void readVenue(Reader& r, const json& root, Show& show) {
+  const json* v = r.member(root, "", "venue", false);
+  if (!v || v->is_null()) return;
+  if (!r.isObject(*v, "/venue", "the venue")) return;
+  r.onlyKeys(*v, "/venue", {"gltf"});
+  r.stringMember(*v, "/venue", "gltf", true, "the path of a glTF file", show.venueGltf, true);
+}
+
+void readAtmosphere(Reader& r, const json& root, Show& show) {
+  const json* a = r.member(root, "", "atmosphere", false);
+  if (!a || !r.isObject(*a, "/atmosphere", "the atmosphere")) return;
+  const std::string p = "/atmosphere";
+  AtmosphereDef& at = show.atmosphere;
+  r.onlyKeys(*a, p, {"scattering", "absorption", "phase", "g", "ambient", "background"});
+  r.numberMember(*a, p, "scattering", false, 0.0, kInf, "a scattering coefficient in 1/m", at.scattering);
+  r.numberMember(*a, p, "absorption", false, 0.0, kInf, "an absorption coefficient in 1/m", at.absorption);
+  std::string phase;
+  if (r.stringMember(*a, p, "phase", false, "a phase function", phase, true)) {
+    if (phase == "hazy" || phase == "isotropic" || phase == "hg")
+      at.phase = phase;
+    else
+      r.problem(p + "/phase", "unknown phase function \"" + phase + "\"; expected hazy, isotropic or hg");
+  }
+  r.numberMember(*a, p, "g", false, -0.99, 0.99, "the Henyey-Greenstein g", at.g);
+  if (const json* j = r.member(*a, p, "ambient", false)) r.greyOrRgb(*j, p + "/ambient", "the ambient light", at.ambient);
+  if (const json* j = r.member(*a, p, "background", false))
+    r.greyOrRgb(*j, p + "/background", "the background radiance", at.background);
+}
+
+void readCameras(Reader& r, const json& root, Show& show) {
+  const json* cams = r.member(root, "", "cameras", false);
+  if (!cams || !r.isArray(*cams, "/cameras", "the camera list")) return;
+  for (size_t i = 0; i < cams->size(); ++i) {
+    const json& c = (*cams)[i];
+    const std::string p = "/cameras/" + std::to_string(i);
+    if (!r.isObject(c, p, "a camera")) continue;
+    r.onlyKeys(c, p, {"name", "position", "target", "up", "fov_y", "far"});
+    CameraDef cam;
+    r.stringMember(c, p, "name", true, "the camera's name", cam.name, true);
+    r.vec3Member(c, p, "position", true, -kInf, kInf, "a position in metres", cam.position);
+    r.vec3Member(c, p, "target", true, -kInf, kInf, "a target point in metres", cam.target);
+    r.vec3Member(c, p, "up", false, -kInf, kInf, "an up vector", cam.up);
+    if (const json* fov = r.member(c, p, "fov_y", true)) {
+      double v = 0;
+      if (r.number(*fov, p + "/fov_y", 1.0, 179.0, "a vertical field of view in degrees", v))
+        cam.fovYDeg = static_cast<float>(v);
+    }
+    if (const json* far = r.member(c, p, "far", false)) {
+      double v = 0;
+      if (r.number(*far, p + "/far", 0.01, kInf, "a far distance in metres", v)) cam.farM = static_cast<float>(v);
+    }
+    show.cameras.push_back(cam);
+  }
+}
+
+void readProfiles(Reader& r, const json& root, Show& show) {
+  const json* profs = r.member(root, "", "profiles", true);
+  if (!profs || !r.isObject(*profs, "/profiles", "profiles by name")) return;
+  for (auto it = profs->begin(); it != profs->end(); ++it) {
+    const std::string p = "/profiles/" + pointerToken(it.key());
+    ProfileRef ref;
+    if (it.key().empty()) {
+      r.problem(p, "expected a profile name, got an empty string");
+      continue;
+    }
+    if (it->is_string()) {
+      if (!r.string(*it, p, "the path of a profile file", ref.path, true)) continue;
+    } else if (it->is_object()) {
+      auto in = it->find("inline");
+      if (it->size() == 1 && in != it->end()) {
+        if (!r.isObject(*in, p + "/inline", "an inline profile")) continue;
+        ref.inlineObject = *in;
+        ref.inlineWrapped = true;
+      } else {
+        ref.inlineObject = *it;
+      }
+    } else {
+      r.problem(p, std::string("expected the path of a profile file (a string) or an inline profile "
+                               "(an object), got ") + typeName(*it));
+      continue;
+    }
+    show.profiles[it.key()] = std::move(ref);
+  }
+}
+
+void readFixtures(Reader& r, const json& root, Show& show) {
+  const json* fix = r.member(root, "", "fixtures", true);
+  if (!fix || !r.isArray(*fix, "/fixtures", "the fixture list")) return;
+  for (size_t i = 0; i < fix->size(); ++i) {
+    const json& f = (*fix)[i];
+    const std::string p = "/fixtures/" + std::to_string(i);
+    FixtureDef d;
+    if (r.isObject(f, p, "a fixture")) {
+      r.onlyKeys(f, p, {"id", "name", "profile", "mode", "position", "rotation", "patch"});
+      if (const json* id = r.member(f, p, "id", true)) r.integer(*id, p + "/id", 1, INT_MAX, "a fixture id", d.id);
+      r.stringMember(f, p, "name", false, "the fixture's name", d.name, false);
+      r.stringMember(f, p, "profile", true, "the name of a profile in /profiles", d.profile, true);
+      r.stringMember(f, p, "mode", false, "the name of a DMX mode of the profile", d.mode, true);
+      r.vec3Member(f, p, "position", false, -kInf, kInf, "a position in metres", d.position);
+      r.vec3Member(f, p, "rotation", false, -kInf, kInf, "a rotation in degrees", d.rotationDeg);
+      const json* patch = r.member(f, p, "patch", false);
+      if (patch && !patch->is_null() && r.isObject(*patch, p + "/patch", "a DMX patch")) {
+        r.onlyKeys(*patch, p + "/patch", {"universe", "address"});
+        Patch pa;
+        bool ok = true;
+        if (const json* u = r.member(*patch, p + "/patch", "universe", true))
+          ok = r.integer(*u, p + "/patch/universe", 1, 65535, "a universe (counted from 1)", pa.universe) && ok;
+        else
+          ok = false;
+        if (const json* a = r.member(*patch, p + "/patch", "address", true))
+          ok = r.integer(*a, p + "/patch/address", 1, 512, "a DMX address", pa.address) && ok;
+        else
+          ok = false;
+        if (ok) d.patch = pa;
+      }
+    }
+    // Kept even when broken, so that later pointers (/fixtures/N) keep their index.
+    show.fixtures.push_back(d);
+  }
+}
+
+bool readFixtureKey(Reader& r, const std::string& key, const std::string& p, int& id) {
+  long long v = 0;
+  auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), v);
+  bool canonical = !key.empty() && key[0] != '0' && ec == std::errc() && end == key.data() + key.size();
+  if (!canonical || v < 1 || v > INT_MAX) {
+    r.problem(p, "expected a fixture id (a positive whole number written as a string, like \"101\"), got \"" +
+                     key + "\"");
+    return false;
+  }
+  id = static_cast<int>(v);
+  return true;
+}
+
+void readValues(Reader& r, const json& vals, const std::string& vp, Cue& cue) {
+  if (!r.isObject(vals, vp, "values by fixture id")) return;
+  for (auto it = vals.begin(); it != vals.end(); ++it) {
+    const std::string p = vp + "/" + pointerToken(it.key());
+    int id = 0;
+    if (!readFixtureKey(r, it.key(), p, id)) continue;
+    const json& a = *it;
+    if (!r.isObject(a, p, "attribute values")) continue;
+    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris"});
+    CueValues v;
+    double x = 0;
+    auto num = [&](const char* key, double lo, double hi, const char* what, std::optional<float>& out) {
+      if (const json* j = r.member(a, p, key, false))
+        if (r.number(*j, p + "/" + key, lo, hi, what, x)) out = static_cast<float>(x);
+    };
+    num("intensity", 0.0, 1.0, "an intensity", v.intensity);
+    num("pan", -kInf, kInf, "a pan angle in degrees", v.panDeg);
+    num("tilt", -kInf, kInf, "a tilt angle in degrees", v.tiltDeg);
+    num("zoom", 0.1, 179.0, "a zoom (field angle) in degrees", v.zoomDeg);
+    num("gobo_rotation", -kInf, kInf, "a gobo rotation in degrees", v.goboRotationDeg);
+    num("iris", 0.0, 1.0, "an iris", v.iris);
+    glm::vec3 c{1.0f};
+    if (r.vec3Member(a, p, "color", false, 0.0, 1.0, "a colour component", c)) v.color = c;
+    std::string gobo;
+    if (r.stringMember(a, p, "gobo", false, "a gobo slot name", gobo, true)) v.gobo = gobo;
+    cue.values[id] = v;
+  }
+}
+
+void readCueLists(Reader& r, const json& root, Show& show) {
+  const json* lists = r.member(root, "", "cue_lists", false);
+  if (!lists || !r.isArray(*lists, "/cue_lists", "the cue lists")) return;
+  for (size_t li = 0; li < lists->size(); ++li) {
+    const json& l = (*lists)[li];
+    const std::string lp = "/cue_lists/" + std::to_string(li);
+    CueList list;
+    if (r.isObject(l, lp, "a cue list")) {
+      r.onlyKeys(l, lp, {"name", "cues"});
+      r.stringMember(l, lp, "name", true, "the cue list's name", list.name, true);
+      const json* cues = r.member(l, lp, "cues", true);
+      if (cues && r.isArray(*cues, lp + "/cues", "the cues")) {
+        for (size_t ci = 0; ci < cues->size(); ++ci) {
+          const json& c = (*cues)[ci];
+          const std::string p = lp + "/cues/" + std::to_string(ci);
+          Cue cue;
+          if (r.isObject(c, p, "a cue")) {
+            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "values"});
+            if (r.stringMember(c, p, "number", true, "a cue number (a decimal string like \"1.5\")", cue.number, true) &&
+                !isCueNumber(cue.number)) {
+              r.problem(p + "/number", "expected a cue number: digits with an optional decimal part, like \"1\" "
+                                       "or \"1.5\", got \"" + cue.number + "\"");
+              cue.number.clear();
+            }
+            r.stringMember(c, p, "label", false, "a label", cue.label, false);
+            double t = 0;
+            if (const json* j = r.member(c, p, "fade", false))
+              if (r.number(*j, p + "/fade", 0.0, kInf, "a fade time in seconds", t)) cue.fadeS = t;
+            if (const json* j = r.member(c, p, "delay", false))
+              if (r.number(*j, p + "/delay", 0.0, kInf, "a delay in seconds", t)) cue.delayS = t;
+            if (const json* j = r.member(c, p, "follow", false); j && !j->is_null()) {
+              if (j->is_number()) {
+                if (r.number(*j, p + "/follow", 0.0, kInf, "a follow time in seconds", t)) cue.followS = t;
+              } else {
+                r.problem(p + "/follow", std::string("expected a follow time in seconds (a number) or null, got ") +
+                                             typeName(*j));
+              }
+            }
+            if (const json* j = r.member(c, p, "values", false)) readValues(r, *j, p + "/values", cue);
+          }
+          list.cues.push_back(std::move(cue));
+        }
+      }
+    }
+    show.cueLists.push_back(std::move(list));
+  }
+}
+
+// Where a future format version's migrations go: each step rewrites the JSON of version v into
+// version v + 1 in place. Version 1 is the first, so there is nothing to migrate yet.
+bool migrate(json& /*root*/, int version) { return version == kShowFormatVersion; }
+
+}  // namespace
+
+std::string pointerToken(std::string_view key) {
+  std::string out;
+  for (char c : key) {
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
+  }
+  return out;
+}
+
+FileStamp stampOf(std::string_view bytes) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return FileStamp{h, bytes.size()};
+}
+
+Result<std::string> readShowBytes(const std::filesystem::path& file) {
+  std::error_code ec;
+  auto status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status))
+    return Error{file.string(), "", "cannot open the show: no such file"};
+  if (!std::filesystem::is_regular_file(status))
+    return Error{file.string(), "", "cannot open the show: not a regular file"};
+  std::uintmax_t size = std::filesystem::file_size(file, ec);
+  if (ec) return Error{file.string(), "", "cannot read the show: " + ec.message()};
+  if (size > kMaxShowFileBytes)
+    return Error{file.string(), "", "the show is " + std::to_string(size) + " bytes; expected at most " +
+                                        std::to_string(kMaxShowFileBytes) + " (is this really a show?)"};
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return Error{file.string(), "", "cannot open the show for reading (permissions?)"};
+  std::string bytes;
+  bytes.resize(static_cast<size_t>(size));
+  in.read(bytes.data(), static_cast<std::streamsize>(size));
+  bytes.resize(static_cast<size_t>(in.gcount()));
+  if (in.bad()) return Error{file.string(), "", "cannot read the show: read error"};
+  return bytes;
+}
+
+ShowParse parseShowText(std::string_view text, const std::filesystem::path& file) {
+  ShowParse out;
+  out.show.file = file;
+  Reader r(file.string(), out.problems);
+  json root;
+  try {
+    json::parser_callback_t limitDepth = [](int depth, json::parse_event_t, json&) {
+      if (depth > kMaxShowJsonDepth) throw TooDeep{};
+      return true;
+    };
+    root = json::parse(text.begin(), text.end(), limitDepth);
+  } catch (const json::parse_error& e) {
+    // e.byte counts from 1 at the character after the problem; turn it into a line and column.
+    size_t at = e.byte > 0 ? std::min<size_t>(e.byte - 1, text.size()) : 0;
+    size_t line = 1, col = 1;
+    for (size_t i = 0; i < at; ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        col = 1;
+      } else {
+        ++col;
+      }
+    }
+    std::string what = e.what();
+    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error ..."
+    auto colon = what.find(": ");
+    if (colon != std::string::npos) what = what.substr(colon + 2);
+    r.problem("line " + std::to_string(line) + ", column " + std::to_string(col),
+              "the show is not valid JSON: " + what);
+    return out;
+  } catch (const TooDeep&) {
+    r.problem("", "the show nests JSON deeper than " + std::to_string(kMaxShowJsonDepth) +
+                      " levels; a show needs a handful");
+    return out;
+  } catch (const std::exception& e) {
+    r.problem("", std::string("the show cannot be read as JSON: ") + e.what());
+    return out;
+  }
+
+  try {
+    if (!root.is_object()) {
+      r.problem("", std::string("expected a show (a JSON object), got ") + typeName(root));
+      return out;
+    }
+    std::string format;
+    if (r.stringMember(root, "", "format", true, "the format name \"haze-show\"", format, false) &&
+        format != "haze-show") {
+      r.problem("/format", "expected \"haze-show\", got \"" + format +
+                               "\"" + (format == "haze-fixture" ? " (this is a fixture profile, not a show)" : ""));
+      return out;
+    }
+    int version = 0;
+    if (const json* v = r.member(root, "", "version", true)) {
+      if (!r.integer(*v, "/version", 1, INT_MAX, "a format version", version)) return out;
+      if (version > kShowFormatVersion) {
+        r.problem("/version", "this show has format version " + std::to_string(version) +
+                                  ", newer than this haze reads (up to " + std::to_string(kShowFormatVersion) +
+                                  "); open it with a newer haze");
+        return out;
+      }
+      if (!migrate(root, version)) {
+        r.problem("/version", "unknown format version " + std::to_string(version) + "; expected " +
+                                  std::to_string(kShowFormatVersion));
+        return out;
+      }
+    } else {
+      return out;
+    }
+    r.onlyKeys(root, "", {"format", "version", "venue", "atmosphere", "cameras", "profiles", "fixtures", "cue_lists"});
+    readVenue(r, root, out.show);
+    readAtmosphere(r, root, out.show);
+    readCameras(r, root, out.show);
+    readProfiles(r, root, out.show);
+    readFixtures(r, root, out.show);
+    readCueLists(r, root, out.show);
+  } catch (const std::exception& e) {
+    // Every access above checks types first; this is a last guard so nothing escapes the library.
+    r.problem("", std::string("the show cannot be read: ") + e.what());
+  }
+  return out;
+}
+
+Result<Show> loadShow(const std::filesystem::path& file) {
+  auto bytes = readShowBytes(file);
+  if (!bytes) return bytes.error();
+  ShowParse parse = parseShowText(*bytes, file);
+  if (!parse.problems.empty()) {
+    Error first = parse.problems.front();
+    if (parse.problems.size() > 1)
+      first.message += " (and " + std::to_string(parse.problems.size() - 1) +
+                       " more problems: haze validate lists them all)";
+    return first;
+  }
+  parse.show.stamp = stampOf(*bytes);
+  return std::move(parse.show);
+}
+
+}  // namespace haze

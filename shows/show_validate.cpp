@@ -1,0 +1,246 @@
+// Cross-checks of a parsed show against its profiles and itself (see show_validate.h). Each
+// problem names the JSON pointer of the value to fix and, where two values clash, the other one.
+#include "shows/show_validate.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+
+#include "shows/cue_number.h"
+#include "shows/show_json.h"
+
+namespace haze {
+
+namespace {
+
+std::string num(float v) {
+  std::ostringstream s;
+  s << tidy(v);
+  return s.str();
+}
+
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out.empty() ? "(none)" : out;
+}
+
+struct Checker {
+  const Show& show;
+  const ProfileSet& profiles;
+  std::vector<Error> problems;
+
+  void problem(std::string ptr, std::string message) {
+    problems.push_back(Error{show.file.string(), std::move(ptr), std::move(message)});
+  }
+
+  const Profile* profileOf(const FixtureDef& f) const {
+    auto it = profiles.find(f.profile);
+    return it == profiles.end() ? nullptr : it->second.get();
+  }
+
+  void venue() {
+    if (show.venueGltf.empty()) return;
+    std::error_code ec;
+    std::filesystem::path p = show.resolve(show.venueGltf);
+    if (!std::filesystem::is_regular_file(p, ec))
+      problem("/venue/gltf", "venue file \"" + show.venueGltf + "\" not found (looked for " +
+                                 std::filesystem::absolute(p, ec).lexically_normal().string() + ")");
+  }
+
+  void cameras() {
+    std::map<std::string, size_t> seen;
+    for (size_t i = 0; i < show.cameras.size(); ++i) {
+      const CameraDef& c = show.cameras[i];
+      const std::string p = "/cameras/" + std::to_string(i);
+      if (!c.name.empty()) {
+        auto [it, fresh] = seen.emplace(c.name, i);
+        if (!fresh)
+          problem(p + "/name", "camera name \"" + c.name + "\" is already used by /cameras/" +
+                                   std::to_string(it->second) + "; expected unique names");
+      }
+      glm::vec3 view = c.target - c.position;
+      if (glm::length(view) < 1e-6f) {
+        problem(p + "/target", "the camera's target is its own position; expected a point it looks at");
+      } else if (glm::length(c.up) < 1e-6f) {
+        problem(p + "/up", "the up vector is zero; expected a direction such as [0, 1, 0]");
+      } else if (glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-4f) {
+        problem(p + "/up", "the up vector is parallel to the viewing direction; expected one across it");
+      }
+    }
+  }
+
+  struct Span {
+    int universe, first, last;
+    size_t index;
+  };
+
+  void fixtures() {
+    std::map<int, size_t> ids;
+    std::vector<Span> spans;
+    std::vector<std::string> profileNames;
+    for (const auto& [name, ref] : show.profiles) profileNames.push_back(name);
+    for (size_t i = 0; i < show.fixtures.size(); ++i) {
+      const FixtureDef& f = show.fixtures[i];
+      const std::string p = "/fixtures/" + std::to_string(i);
+      if (f.id > 0) {
+        auto [it, fresh] = ids.emplace(f.id, i);
+        if (!fresh)
+          problem(p + "/id", "fixture id " + std::to_string(f.id) + " is already used by /fixtures/" +
+                                 std::to_string(it->second) + "; expected unique ids");
+      }
+      if (f.profile.empty()) continue;
+      if (!show.profiles.count(f.profile)) {
+        problem(p + "/profile", "unknown profile \"" + f.profile + "\"; expected one of the show's profiles: " +
+                                    joinNames(profileNames));
+        continue;
+      }
+      const Profile* prof = profileOf(f);
+      if (!prof) continue;  // failed to load: reported at /profiles/NAME
+      const DmxMode* mode = nullptr;
+      if (!f.mode.empty()) {
+        mode = prof->findMode(f.mode);
+        if (!mode) {
+          std::vector<std::string> modes;
+          for (const DmxMode& m : prof->modes) modes.push_back("\"" + m.name + "\"");
+          problem(p + "/mode", "profile \"" + f.profile + "\" has no DMX mode \"" + f.mode + "\"; its modes are: " +
+                                   joinNames(modes));
+          continue;
+        }
+      } else if (!prof->modes.empty()) {
+        mode = &prof->modes.front();  // no mode named: the profile's first
+      }
+      if (!f.patch) continue;
+      if (!mode) {
+        problem(p + "/patch", "profile \"" + f.profile + "\" has no DMX modes, so the fixture cannot be patched; "
+                              "expected no patch");
+        continue;
+      }
+      int footprint = std::max(1, mode->footprint());
+      int last = f.patch->address + footprint - 1;
+      if (last > 512) {
+        problem(p + "/patch/address", "mode \"" + mode->name + "\" needs " + std::to_string(footprint) +
+                                          " channels, so address " + std::to_string(f.patch->address) +
+                                          " would run to channel " + std::to_string(last) +
+                                          ", past 512; expected an address of at most " +
+                                          std::to_string(513 - footprint));
+        continue;
+      }
+      spans.push_back(Span{f.patch->universe, f.patch->address, last, i});
+    }
+    // Overlaps: sweep each universe in address order, keeping the span that reaches furthest.
+    std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) {
+      return std::tie(a.universe, a.first, a.index) < std::tie(b.universe, b.first, b.index);
+    });
+    const Span* reach = nullptr;
+    for (const Span& s : spans) {
+      if (reach && reach->universe == s.universe && s.first <= reach->last) {
+        const Span& later = s.index > reach->index ? s : *reach;
+        const Span& earlier = s.index > reach->index ? *reach : s;
+        const FixtureDef& e = show.fixtures[earlier.index];
+        problem("/fixtures/" + std::to_string(later.index) + "/patch/address",
+                "channels " + std::to_string(later.first) + "-" + std::to_string(later.last) + " of universe " +
+                    std::to_string(s.universe) + " overlap fixture " + std::to_string(e.id) + " (/fixtures/" +
+                    std::to_string(earlier.index) + "), which uses " + std::to_string(earlier.first) + "-" +
+                    std::to_string(earlier.last) + "; expected each fixture its own channels");
+      }
+      if (!reach || reach->universe != s.universe || s.last > reach->last) reach = &s;
+    }
+  }
+
+  void range(const std::string& ptr, const char* what, float v, const Range& r, const std::string& profile) {
+    if (r.contains(v)) return;
+    problem(ptr, std::string(what) + " " + num(v) + " is outside the range of profile \"" + profile + "\"; expected " +
+                     num(r.min) + " to " + num(r.max));
+  }
+
+  void values(const std::string& p, const Cue& cue) {
+    for (const auto& [id, v] : cue.values) {
+      const std::string vp = p + "/values/" + std::to_string(id);
+      const FixtureDef* f = show.findFixture(id);
+      if (!f) {
+        problem(vp, "no fixture with id " + std::to_string(id) + "; expected the id of a fixture in /fixtures");
+        continue;
+      }
+      const Profile* prof = profileOf(*f);
+      if (!prof) continue;
+      if (v.panDeg) range(vp + "/pan", "pan", *v.panDeg, prof->panDeg, f->profile);
+      if (v.tiltDeg) range(vp + "/tilt", "tilt", *v.tiltDeg, prof->tiltDeg, f->profile);
+      if (v.zoomDeg) range(vp + "/zoom", "zoom", *v.zoomDeg, prof->zoomDeg, f->profile);
+      if (v.gobo && !prof->findGobo(*v.gobo)) {
+        std::vector<std::string> slots{"\"Open\""};
+        if (!prof->goboWheels.empty())
+          for (const WheelSlot& s : prof->goboWheels.front().slots)
+            if (s.name != "Open") slots.push_back("\"" + s.name + "\"");
+        problem(vp + "/gobo", "profile \"" + f->profile + "\" has no gobo slot \"" + *v.gobo +
+                                  "\" on its first gobo wheel; expected one of: " + joinNames(slots));
+      }
+    }
+  }
+
+  void cueLists() {
+    std::map<std::string, size_t> names;
+    for (size_t li = 0; li < show.cueLists.size(); ++li) {
+      const CueList& l = show.cueLists[li];
+      const std::string lp = "/cue_lists/" + std::to_string(li);
+      if (!l.name.empty()) {
+        auto [it, fresh] = names.emplace(l.name, li);
+        if (!fresh)
+          problem(lp + "/name", "cue list name \"" + l.name + "\" is already used by /cue_lists/" +
+                                    std::to_string(it->second) + "; expected unique names");
+      }
+      std::optional<size_t> previous;  // the last cue with a readable number
+      for (size_t ci = 0; ci < l.cues.size(); ++ci) {
+        const Cue& c = l.cues[ci];
+        const std::string p = lp + "/cues/" + std::to_string(ci);
+        if (!c.number.empty()) {
+          if (previous) {
+            const Cue& b = l.cues[*previous];
+            int order = compareCueNumbers(b.number, c.number);
+            const std::string where = lp + "/cues/" + std::to_string(*previous);
+            if (order == 0)
+              problem(p + "/number", "cue number \"" + c.number + "\" repeats cue \"" + b.number + "\" (" + where +
+                                         "); expected each number once");
+            else if (order > 0)
+              problem(p + "/number", "cue number \"" + c.number + "\" comes after cue \"" + b.number + "\" (" + where +
+                                         "); expected numbers that increase down the list");
+          }
+          previous = ci;
+        }
+        values(p, c);
+      }
+    }
+  }
+};
+
+}  // namespace
+
+std::vector<Error> validateShow(const Show& show, const ProfileSet& profiles) {
+  Checker c{show, profiles, {}};
+  c.venue();
+  c.cameras();
+  c.fixtures();
+  c.cueLists();
+  return std::move(c.problems);
+}
+
+std::vector<Error> validateShowFile(const std::filesystem::path& file) {
+  auto bytes = readShowBytes(file);
+  if (!bytes) return {bytes.error()};
+  return validateShowText(*bytes, file);
+}
+
+std::vector<Error> validateShowText(std::string_view text, const std::filesystem::path& file) {
+  ShowParse parse = parseShowText(text, file);
+  std::vector<Error> all = std::move(parse.problems);
+  ProfileLoad load = loadProfilesAll(parse.show);
+  all.insert(all.end(), load.problems.begin(), load.problems.end());
+  std::vector<Error> cross = validateShow(parse.show, load.profiles);
+  all.insert(all.end(), cross.begin(), cross.end());
+  return all;
+}
+
+}  // namespace haze

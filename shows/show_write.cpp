@@ -1,0 +1,177 @@
+// Writing a show as text a person can diff: keys in the order of show-format.md, 2-space indent,
+// number arrays ([x, y, z], colours) on one line, floats in their shortest form, whole numbers
+// without ".0", so that loading and saving an unchanged show changes no byte.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+#include <nlohmann/json.hpp>
+
+#include "shows/show_json.h"
+
+namespace haze {
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+ojson vec(const glm::vec3& v) { return ojson::array({tidy(v.x), tidy(v.y), tidy(v.z)}); }
+
+ojson greyOrRgb(const glm::vec3& v) {
+  if (v.x == v.y && v.y == v.z) return tidy(v.x);
+  return vec(v);
+}
+
+bool isScalar(const ojson& j) { return !j.is_object() && !j.is_array(); }
+
+void print(const ojson& j, int indent, std::string& out);
+
+std::string scalar(const ojson& j) {
+  if (j.is_number_float()) {
+    double v = j.get<double>();
+    if (std::isfinite(v) && std::floor(v) == v && std::fabs(v) < 1e15) {
+      char buf[32];
+      auto res = std::to_chars(buf, buf + sizeof buf, static_cast<long long>(v));
+      return std::string(buf, res.ptr);
+    }
+  }
+  return j.dump(-1, ' ', false, ojson::error_handler_t::replace);
+}
+
+void print(const ojson& j, int indent, std::string& out) {
+  const std::string pad(static_cast<size_t>(indent) + 2, ' ');
+  if (j.is_object()) {
+    if (j.empty()) {
+      out += "{}";
+      return;
+    }
+    out += "{\n";
+    size_t i = 0;
+    for (auto it = j.begin(); it != j.end(); ++it, ++i) {
+      out += pad + ojson(it.key()).dump(-1, ' ', false, ojson::error_handler_t::replace) + ": ";
+      print(*it, indent + 2, out);
+      out += i + 1 < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<size_t>(indent), ' ') + "}";
+  } else if (j.is_array()) {
+    bool flat = std::all_of(j.begin(), j.end(), [](const ojson& e) { return isScalar(e); });
+    if (j.empty() || flat) {
+      out += "[";
+      for (size_t i = 0; i < j.size(); ++i) out += (i ? ", " : "") + scalar(j[i]);
+      out += "]";
+      return;
+    }
+    out += "[\n";
+    for (size_t i = 0; i < j.size(); ++i) {
+      out += pad;
+      print(j[i], indent + 2, out);
+      out += i + 1 < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<size_t>(indent), ' ') + "]";
+  } else {
+    out += scalar(j);
+  }
+}
+
+ojson valuesJson(const CueValues& v) {
+  ojson o = ojson::object();
+  if (v.intensity) o["intensity"] = tidy(*v.intensity);
+  if (v.panDeg) o["pan"] = tidy(*v.panDeg);
+  if (v.tiltDeg) o["tilt"] = tidy(*v.tiltDeg);
+  if (v.color) o["color"] = vec(*v.color);
+  if (v.zoomDeg) o["zoom"] = tidy(*v.zoomDeg);
+  if (v.gobo) o["gobo"] = *v.gobo;
+  if (v.goboRotationDeg) o["gobo_rotation"] = tidy(*v.goboRotationDeg);
+  if (v.iris) o["iris"] = tidy(*v.iris);
+  return o;
+}
+
+ojson showJson(const Show& s) {
+  ojson root = ojson::object();
+  root["format"] = "haze-show";
+  root["version"] = kShowFormatVersion;
+  if (!s.venueGltf.empty()) root["venue"] = ojson{{"gltf", s.venueGltf}};
+  const AtmosphereDef& a = s.atmosphere;
+  ojson at = ojson::object();
+  at["scattering"] = tidy(a.scattering);
+  at["absorption"] = tidy(a.absorption);
+  at["phase"] = a.phase;
+  at["g"] = tidy(a.g);
+  at["ambient"] = greyOrRgb(a.ambient);
+  if (a.background != glm::vec3(0.0f)) at["background"] = greyOrRgb(a.background);
+  root["atmosphere"] = at;
+  ojson cams = ojson::array();
+  for (const CameraDef& c : s.cameras) {
+    ojson o = ojson::object();
+    o["name"] = c.name;
+    o["position"] = vec(c.position);
+    o["target"] = vec(c.target);
+    if (c.up != glm::vec3(0.0f, 1.0f, 0.0f)) o["up"] = vec(c.up);
+    o["fov_y"] = tidy(c.fovYDeg);
+    if (c.farM != 100.0f) o["far"] = tidy(c.farM);
+    cams.push_back(o);
+  }
+  root["cameras"] = cams;
+  ojson profs = ojson::object();
+  for (const auto& [name, ref] : s.profiles) {
+    if (ref.inlineObject) {
+      // nlohmann::json keeps object keys sorted, so an inline profile writes in a stable order.
+      ojson body = ojson::parse(ref.inlineObject->dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+      profs[name] = ref.inlineWrapped ? ojson{{"inline", body}} : body;
+    } else {
+      profs[name] = ref.path;
+    }
+  }
+  root["profiles"] = profs;
+  ojson fixtures = ojson::array();
+  for (const FixtureDef& f : s.fixtures) {
+    ojson o = ojson::object();
+    o["id"] = f.id;
+    if (!f.name.empty()) o["name"] = f.name;
+    o["profile"] = f.profile;
+    if (!f.mode.empty()) o["mode"] = f.mode;
+    o["position"] = vec(f.position);
+    o["rotation"] = vec(f.rotationDeg);
+    if (f.patch) o["patch"] = ojson{{"universe", f.patch->universe}, {"address", f.patch->address}};
+    fixtures.push_back(o);
+  }
+  root["fixtures"] = fixtures;
+  ojson lists = ojson::array();
+  for (const CueList& l : s.cueLists) {
+    ojson cues = ojson::array();
+    for (const Cue& c : l.cues) {
+      ojson o = ojson::object();
+      o["number"] = c.number;
+      o["label"] = c.label;
+      o["fade"] = c.fadeS;
+      o["delay"] = c.delayS;
+      o["follow"] = c.followS ? ojson(*c.followS) : ojson(nullptr);
+      ojson vals = ojson::object();
+      for (const auto& [id, v] : c.values) vals[std::to_string(id)] = valuesJson(v);
+      o["values"] = vals;
+      cues.push_back(o);
+    }
+    lists.push_back(ojson{{"name", l.name}, {"cues", cues}});
+  }
+  root["cue_lists"] = lists;
+  return root;
+}
+
+}  // namespace
+
+double tidy(float f) {
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf - 1, f);
+  *res.ptr = '\0';
+  return std::strtod(buf, nullptr);
+}
+
+std::string showToText(const Show& show) {
+  std::string out;
+  print(showJson(show), 0, out);
+  out += "\n";
+  return out;
+}
+
+}  // namespace haze

@@ -1,0 +1,58 @@
+// Sends sACN (E1.31) to haze from the npm `sacn` package, an encoder independent of haze's.
+// usage: node send_sacn.js PORT ROUNDS STREAMS_JSON [BAD_PACKETS]
+//   STREAMS_JSON: [{"universe": 1, "priority": 100, "cid": 1, "name": "main",
+//                   "slots": {"1": 255, "2": 128}}, ...]  (raw DMX values, unicast to 127.0.0.1)
+//   Every stream is sent once a round, a round every 100 ms; after round 10 (or the last) the
+//   script prints "ready" so a test knows levels have arrived. BAD_PACKETS datagrams with an
+//   out-of-range priority (250) are sent once at the start, for the malformed counters.
+'use strict';
+const dgram = require('dgram');
+const { Sender, Packet } = require('sacn');
+
+const [port, roundsArg, streamsJson, badArg] = process.argv.slice(2);
+if (!port || !roundsArg || !streamsJson) {
+  console.error('usage: node send_sacn.js PORT ROUNDS STREAMS_JSON [BAD_PACKETS]');
+  process.exit(2);
+}
+const streams = JSON.parse(streamsJson);
+const bad = Number(badArg || 0);
+
+const senders = streams.map((s) => {
+  const cid = Buffer.alloc(16, s.cid || 1);
+  return {
+    sender: new Sender({
+      universe: s.universe,
+      port: Number(port),
+      useUnicastDestination: '127.0.0.1',
+      defaultPacketOptions: { cid, sourceName: s.name || 'haze test', priority: s.priority || 100,
+                              useRawDmxValues: true },
+    }),
+    payload: s.slots,
+  };
+});
+
+async function main() {
+  if (bad > 0) {
+    const socket = dgram.createSocket('udp4');
+    const buffer = new Packet({ universe: 1, sequence: 0, payload: {}, sourceName: 'bad',
+                                priority: 100, cid: Buffer.alloc(16, 0xEE) }).buffer;
+    buffer[108] = 250;  // E1.31 priorities stop at 200
+    for (let i = 0; i < bad; ++i) {
+      await new Promise((resolve, reject) =>
+        socket.send(buffer, Number(port), '127.0.0.1', (e) => (e ? reject(e) : resolve())));
+    }
+    socket.close();
+  }
+  const rounds = Number(roundsArg);
+  for (let round = 1; round <= rounds; ++round) {
+    for (const s of senders) await s.sender.send({ payload: s.payload });
+    if (round === Math.min(10, rounds)) process.stdout.write('ready\n');
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  for (const s of senders) s.sender.close();
+}
+
+main().catch((e) => {
+  console.error('send_sacn.js:', e.message);
+  process.exit(1);
+});

@@ -1,0 +1,102 @@
+#include "render_test_util.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "fixtures/photometry.h"
+
+namespace haze::test {
+
+Venue floorVenue(float sizeM, float albedo) {
+  Venue v;
+  v.materials.push_back(Material{.name = "default"});
+  v.materials.push_back(Material{.name = "floor", .baseColor = glm::vec4(albedo, albedo, albedo, 1.0f)});
+  Primitive p;
+  p.name = "floor";
+  const float h = sizeM * 0.5f;
+  p.positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
+  p.normals.assign(4, glm::vec3(0, 1, 0));
+  p.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  p.indices = {0, 2, 1, 0, 3, 2};
+  p.material = 1;
+  v.primitives.push_back(p);
+  v.boundsMin = glm::vec3(-h, 0, -h);
+  v.boundsMax = glm::vec3(h, 0, h);
+  return v;
+}
+
+void addBox(Venue& v, glm::vec3 lo, glm::vec3 hi) {
+  Primitive p;
+  p.name = "box";
+  p.material = static_cast<int>(v.materials.size()) - 1;
+  const glm::vec3 n[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const glm::vec3& nn : n) {
+    // Four corners of the face with normal nn.
+    glm::vec3 a = glm::abs(nn);
+    glm::vec3 u = a.x > 0 ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    glm::vec3 w = glm::cross(a, u);
+    glm::vec3 c = (lo + hi) * 0.5f + nn * (hi - lo) * 0.5f;
+    glm::vec3 hu = u * (hi - lo) * 0.5f, hw = w * (hi - lo) * 0.5f;
+    const uint32_t base = static_cast<uint32_t>(p.positions.size());
+    for (glm::vec3 q : {c - hu - hw, c + hu - hw, c + hu + hw, c - hu + hw}) {
+      p.positions.push_back(q);
+      p.normals.push_back(nn);
+      p.uvs.push_back(glm::vec2(0));
+    }
+    p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+  }
+  v.primitives.push_back(p);
+  v.boundsMin = glm::min(v.boundsMin, lo);
+  v.boundsMax = glm::max(v.boundsMax, hi);
+}
+
+BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldDeg, float peakCd, glm::vec3 color) {
+  BeamState b;
+  b.pose.lensPosition = lensPos;
+  b.pose.zb = glm::normalize(dir);
+  const glm::vec3 helper = std::abs(b.pose.zb.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  b.pose.xb = glm::normalize(glm::cross(helper, b.pose.zb));
+  b.pose.yb = glm::cross(b.pose.zb, b.pose.xb);
+  auto dist = parametricDistribution(beamDeg, fieldDeg, peakCd);
+  EXPECT_TRUE(dist.ok()) << (dist.ok() ? "" : dist.error().str());
+  b.optics.distribution = std::make_shared<Distribution>(std::move(*dist));
+  b.optics.profileFieldAngleDeg = fieldDeg;
+  b.optics.fieldAngleDeg = fieldDeg;
+  b.optics.color = color;
+  b.optics.dimmer = 1.0f;
+  b.poseKey = 1;
+  b.opticsKey = 1;
+  return b;
+}
+
+Comparison compare(const ImageRGB& actual, const ImageRGB& reference, float threshold) {
+  Comparison c;
+  float maxL = 0.0f;
+  for (const glm::vec3& p : reference.pixels) maxL = std::max(maxL, std::max({p.r, p.g, p.b}));
+  double sum = 0.0;
+  for (size_t i = 0; i < reference.pixels.size() && i < actual.pixels.size(); ++i) {
+    for (int ch = 0; ch < 3; ++ch) {
+      const float r = reference.pixels[i][ch];
+      if (r <= threshold * maxL) continue;
+      const double e = std::abs(actual.pixels[i][ch] - r) / r;
+      sum += e;
+      c.maxRelError = std::max(c.maxRelError, e);
+      ++c.pixels;
+    }
+  }
+  c.meanRelError = c.pixels ? sum / static_cast<double>(c.pixels) : 0.0;
+  return c;
+}
+
+void writeDiagnostics(const std::string& name, const ImageRGB& actual, const ImageRGB& reference) {
+  ImageRGB diff = actual;
+  for (size_t i = 0; i < diff.pixels.size() && i < reference.pixels.size(); ++i)
+    diff.pixels[i] = glm::abs(actual.pixels[i] - reference.pixels[i]);
+  (void)writePfm(actual, name + ".actual.pfm");
+  (void)writePfm(reference, name + ".expected.pfm");
+  (void)writePfm(diff, name + ".diff.pfm");
+}
+
+}  // namespace haze::test
