@@ -115,6 +115,9 @@ void printReport(const LiveReceiver& live, double seconds) {
     std::fprintf(stderr, "haze live: malformed %s: %llu\n", reason.c_str(),
                  static_cast<unsigned long long>(count));
   }
+  for (const Error& e : s.firstMalformed) {
+    std::fprintf(stderr, "haze live: dropped %s\n", e.str().c_str());
+  }
   for (const DmxSourceInfo& src : live.sources()) {
     std::fprintf(stderr, "haze live: source %s %s \"%s\" universe %d priority %d%s\n",
                  src.id.protocol == DmxProtocol::Sacn ? "sACN" : "Art-Net", src.id.str().c_str(),

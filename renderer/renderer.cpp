@@ -1,11 +1,15 @@
 #include "renderer/renderer.h"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
+
+#include <glm/geometric.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "renderer/beam_pass.h"
 #include "renderer/beam_resources.h"
 #include "renderer/gl/program.h"
 #include "renderer/gpu_venue.h"
@@ -34,6 +38,9 @@ struct Renderer::Impl {
   gl::Program shadowProgram, surfaceProgram, postProgram;
   gl::Texture radiance, depth, display;
   gl::Framebuffer sceneFbo{"scene_fbo"}, displayFbo{"display_fbo"};
+  // The radiance target without its depth, for passes that read the scene depth as a texture.
+  gl::Framebuffer radianceOnlyFbo{"radiance_only_fbo"};
+  BeamPass beamPass;
   gl::VertexArray emptyVao{"fullscreen_vao"};
 
   Impl(const Venue& v, const RenderSettings& s)
@@ -57,6 +64,11 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   impl->shadowProgram = std::move(*shadow);
   impl->surfaceProgram = std::move(*surface);
   impl->postProgram = std::move(*post);
+  auto pass = BeamPass::create(settings.width, settings.height,
+                               {.planes = settings.planes, .scatterDivisor = settings.scatterDivisor,
+                                .frames = settings.frames, .jitter = settings.jitter});
+  if (!pass) return pass.error();
+  impl->beamPass = std::move(*pass);
 
   const int w = settings.width, h = settings.height;
   impl->radiance = gl::Texture(GL_TEXTURE_2D, "radiance");
@@ -65,6 +77,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   impl->depth = gl::Texture(GL_TEXTURE_2D, "scene_depth");
   glTextureStorage2D(impl->depth.id(), 1, GL_DEPTH_COMPONENT32F, w, h);
+  glTextureParameteri(impl->depth.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(impl->depth.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glNamedFramebufferTexture(impl->radianceOnlyFbo.id(), GL_COLOR_ATTACHMENT0, impl->radiance.id(), 0);
   glNamedFramebufferTexture(impl->sceneFbo.id(), GL_COLOR_ATTACHMENT0, impl->radiance.id(), 0);
   glNamedFramebufferTexture(impl->sceneFbo.id(), GL_DEPTH_ATTACHMENT, impl->depth.id(), 0);
   impl->display = gl::Texture(GL_TEXTURE_2D, "display");
@@ -76,7 +91,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   return std::unique_ptr<Renderer>(new Renderer(std::move(impl), settings));
 }
 
-void Renderer::render(const FrameState& frame) {
+void Renderer::render(const FrameState& frame, bool accumulate) {
   Impl& m = *impl_;
   times_ = {};
   auto t0 = std::chrono::steady_clock::now();
@@ -124,6 +139,22 @@ void Renderer::render(const FrameState& frame) {
   }
   glFinish();
   times_.surfacesMs = msSince(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  // Light cones end where they leave the venue: bound them by the farthest corner of its box.
+  float coneLength = 1.0f;
+  for (const BeamState& b : frame.beams)
+    for (int i = 0; i < 8; ++i) {
+      const glm::vec3 c((i & 1) ? m.venue.boundsMax().x : m.venue.boundsMin().x,
+                        (i & 2) ? m.venue.boundsMax().y : m.venue.boundsMin().y,
+                        (i & 4) ? m.venue.boundsMax().z : m.venue.boundsMin().z);
+      coneLength = std::max(coneLength, glm::length(c - b.pose.lensPosition));
+    }
+  times_.planeFragments =
+      m.beamPass.render(frame, m.beams, coneLength, m.depth.id(), m.radianceOnlyFbo.id(), accumulate);
+  times_.accumulatedFrames = m.beamPass.accumulatedFrames();
+  glFinish();
+  times_.beamsMs = msSince(t0);
 }
 
 ImageRGB Renderer::readRadiance() const {

@@ -3,6 +3,7 @@
 // beam), surfaces, volumetric beams, post. Needs a current OpenGL 4.5 context (renderer/context.h).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -18,6 +19,10 @@ struct RenderSettings {
   int height = 720;
   int lightMapSize = 512;
   int shadowMapSize = 1024;
+  int planes = 48;          // virtual planes per beam
+  int scatterDivisor = 1;   // scattering buffer at 1/n resolution, depth-aware upsample
+  int frames = 1;           // jittered frames accumulated per render
+  bool jitter = true;
 };
 
 struct DisplaySettings {
@@ -30,6 +35,8 @@ struct DisplaySettings {
 struct PassTimes {
   double shadowMapsMs = 0, surfacesMs = 0, beamsMs = 0, postMs = 0;
   int shadowMapsRendered = 0, lightMapsBaked = 0;
+  uint64_t planeFragments = 0;
+  int accumulatedFrames = 0;
 };
 
 class Renderer {
@@ -37,7 +44,9 @@ class Renderer {
   static Result<std::unique_ptr<Renderer>> create(const Venue& venue, const RenderSettings& settings);
   ~Renderer();
 
-  void render(const FrameState& frame);
+  // With accumulate, the beams' scattering of earlier renders is kept and one more jittered
+  // set of frames is added (progressive refinement; the caller promises the frame is unchanged).
+  void render(const FrameState& frame, bool accumulate = false);
   // The radiometric image of the last render, row 0 at the top.
   ImageRGB readRadiance() const;
   // The display encoding (8-bit sRGB, row 0 at the top) of the last render.

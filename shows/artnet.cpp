@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 namespace haze {
 
@@ -25,6 +26,20 @@ std::string_view artNetStatusName(ArtNetStatus s) {
     case ArtNetStatus::Truncated: return "truncated";
   }
   return "unknown";
+}
+
+Error artNetError(const ArtDmxParse& p) {
+  const char* what = "";
+  switch (p.status) {
+    case ArtNetStatus::Ok: what = "a valid ArtDmx packet"; break;
+    case ArtNetStatus::Ignored: what = "an Art-Net OpCode other than OpDmx (0x5000), which carries no levels"; break;
+    case ArtNetStatus::TooShort: what = "the datagram ends inside the header; expected 18 header bytes"; break;
+    case ArtNetStatus::BadId: what = "not Art-Net: expected \"Art-Net\" and a NUL in bytes 0-7"; break;
+    case ArtNetStatus::OldProtocol: what = "protocol version below 14; expected Art-Net 4 (ProtVer >= 14)"; break;
+    case ArtNetStatus::BadLength: what = "DMX length is odd or outside 2..512; expected an even length 2..512"; break;
+    case ArtNetStatus::Truncated: what = "the datagram holds fewer DMX bytes than its Length field says"; break;
+  }
+  return Error{"", "byte " + std::to_string(p.byte), what};
 }
 
 ArtDmxParse parseArtDmx(std::span<const uint8_t> d) {

@@ -8,6 +8,8 @@
 #include <span>
 #include <string_view>
 
+#include "fixtures/result.h"
+
 namespace haze {
 
 inline constexpr uint16_t kArtNetPort = 6454;
@@ -46,5 +48,7 @@ struct ArtDmxParse {
 };
 
 ArtDmxParse parseArtDmx(std::span<const uint8_t> datagram);
+// A failed parse as an Error: place "byte N", what was wrong and what was expected.
+Error artNetError(const ArtDmxParse& parse);
 
 }  // namespace haze

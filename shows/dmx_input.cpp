@@ -82,6 +82,14 @@ double DmxInput::packetRate(double nowS) const {
   return static_cast<double>(sum);
 }
 
+void DmxInput::countMalformed(const std::string& reason, Error error, const char* protocol,
+                              uint32_t ip, uint16_t port) {
+  ++stats_.malformed[reason];
+  if (stats_.firstMalformed.size() >= DmxInputStats::kKeptMalformed) return;
+  error.file = std::string(protocol) + " from " + DmxSourceId::artNet(ip, port).str();
+  stats_.firstMalformed.push_back(std::move(error));
+}
+
 void DmxInput::receive(DmxProtocol protocol, std::span<const uint8_t> datagram,
                        uint32_t senderIpv4, uint16_t senderPort, double nowS) {
   ++stats_.received;
@@ -94,7 +102,8 @@ void DmxInput::receive(DmxProtocol protocol, std::span<const uint8_t> datagram,
       return;
     }
     if (!p.ok()) {
-      ++stats_.malformed["artnet." + std::string(artNetStatusName(p.status))];
+      countMalformed("artnet." + std::string(artNetStatusName(p.status)), artNetError(p), "Art-Net",
+                     senderIpv4, senderPort);
       return;
     }
     frame.source = DmxSourceId::artNet(senderIpv4, senderPort);
@@ -111,7 +120,8 @@ void DmxInput::receive(DmxProtocol protocol, std::span<const uint8_t> datagram,
       return;
     }
     if (!p.ok()) {
-      ++stats_.malformed["sacn." + std::string(sacnStatusName(p.status))];
+      countMalformed("sacn." + std::string(sacnStatusName(p.status)), sacnError(p), "sACN",
+                     senderIpv4, senderPort);
       return;
     }
     if (p.packet.preview() && !options_.acceptPreview) {

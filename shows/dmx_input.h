@@ -41,6 +41,9 @@ struct DmxInputStats {
   uint64_t unwatched = 0;    // levels for a universe no fixture is patched on
   uint64_t exceeded = 0;     // sources beyond the merger's limits
   std::map<std::string, uint64_t> malformed;  // "sacn.bad_priority" -> count
+  // The first few malformed packets in full (file = protocol and sender), for the log.
+  std::vector<Error> firstMalformed;
+  static constexpr size_t kKeptMalformed = 8;
   uint64_t malformedTotal() const;
 };
 
@@ -68,6 +71,8 @@ class DmxInput {
 
  private:
   void countGood(double nowS);
+  void countMalformed(const std::string& reason, Error error, const char* protocol,
+                      uint32_t senderIpv4, uint16_t senderPort);
 
   const Show& show_;
   const ProfileSet& profiles_;

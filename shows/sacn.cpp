@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 namespace haze {
 
@@ -50,6 +51,31 @@ std::string_view sacnStatusName(SacnStatus s) {
     case SacnStatus::BadPropertyCount: return "bad_property_count";
   }
   return "unknown";
+}
+
+Error sacnError(const SacnParse& p) {
+  const char* what = "";
+  switch (p.status) {
+    case SacnStatus::Ok: what = "a valid E1.31 data packet"; break;
+    case SacnStatus::Ignored: what = "a synchronization or discovery packet, or an alternate START code: no levels"; break;
+    case SacnStatus::TooShort: what = "the datagram ends inside a header; expected 126 bytes or more"; break;
+    case SacnStatus::BadPreamble: what = "preamble size is not 0x0010"; break;
+    case SacnStatus::BadPostamble: what = "post-amble size is not 0x0000"; break;
+    case SacnStatus::BadAcnId: what = "not ACN: expected \"ASC-E1.17\" and three NULs in bytes 4-15"; break;
+    case SacnStatus::BadRootLength: what = "root layer flags are not 0x7 or its length is not the datagram size - 16"; break;
+    case SacnStatus::BadRootVector: what = "root vector is neither VECTOR_ROOT_E131_DATA (4) nor EXTENDED (8)"; break;
+    case SacnStatus::BadFramingLength: what = "framing layer flags are not 0x7 or its length is not the root length - 22"; break;
+    case SacnStatus::BadFramingVector: what = "framing vector is not VECTOR_E131_DATA_PACKET (2)"; break;
+    case SacnStatus::BadPriority: what = "priority is above 200; expected 0..200"; break;
+    case SacnStatus::BadUniverse: what = "universe outside 1..63999"; break;
+    case SacnStatus::BadDmpLength: what = "DMP layer flags are not 0x7 or its length is not the framing length - 77"; break;
+    case SacnStatus::BadDmpVector: what = "DMP vector is not VECTOR_DMP_SET_PROPERTY (2)"; break;
+    case SacnStatus::BadAddressType: what = "address and data type is not 0xa1"; break;
+    case SacnStatus::BadFirstAddress: what = "first property address is not 0"; break;
+    case SacnStatus::BadIncrement: what = "address increment is not 1"; break;
+    case SacnStatus::BadPropertyCount: what = "property value count does not match the DMP length or exceeds 513"; break;
+  }
+  return Error{"", "byte " + std::to_string(p.byte), what};
 }
 
 uint32_t sacnMulticastGroup(int universe) {

@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "fixtures/result.h"
+
 namespace haze {
 
 inline constexpr uint16_t kSacnPort = 5568;
@@ -66,6 +68,8 @@ struct SacnParse {
 };
 
 SacnParse parseSacn(std::span<const uint8_t> datagram);
+// A failed parse as an Error: place "byte N", what was wrong and what was expected.
+Error sacnError(const SacnParse& parse);
 
 // The IPv4 multicast group of an sACN universe, host byte order: 239.255.hi.lo.
 uint32_t sacnMulticastGroup(int universe);

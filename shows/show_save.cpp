@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <string>
 
 #include <fcntl.h>
@@ -92,6 +93,17 @@ std::string tempName(const std::string& stem) {
   return "." + stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(gSaveCounter++);
 }
 
+// Relative paths inside a show are relative to its folder; saving into another folder rewrites
+// them so they still name the same files. Absolute paths stay as they are.
+std::string rebase(const std::string& relative, const fs::path& oldDir, const fs::path& newDir) {
+  fs::path p(relative);
+  if (relative.empty() || p.is_absolute()) return relative;
+  std::error_code ec;
+  fs::path target = fs::absolute(oldDir / p, ec).lexically_normal();
+  fs::path rebased = target.lexically_relative(fs::absolute(newDir, ec).lexically_normal());
+  return rebased.empty() ? target.string() : rebased.generic_string();
+}
+
 }  // namespace
 
 fs::path backupPathFor(const fs::path& file) {
@@ -154,9 +166,22 @@ Status saveShow(Show& show, const fs::path& file, const SaveOptions& options) {
       return Error{file.string(), "", "the file changed on disk since the show was loaded (edited elsewhere?); "
                                       "reload it, or save with force to overwrite those changes"};
   }
-  std::string text = showToText(show);
+  // Saving into another folder: relative paths are rewritten to name the same files from there.
+  std::optional<Show> moved;
+  const fs::path oldDir = show.file.parent_path(), newDir = file.parent_path();
+  if (!show.file.empty() && fs::absolute(oldDir, ec).lexically_normal() != fs::absolute(newDir, ec).lexically_normal()) {
+    moved = show;
+    moved->venueGltf = rebase(show.venueGltf, oldDir, newDir);
+    for (auto& [name, ref] : moved->profiles)
+      if (!ref.inlineObject) ref.path = rebase(ref.path, oldDir, newDir);
+  }
+  const std::string text = showToText(moved ? *moved : show);
   Status written = writeFileAtomically(file, text, options.keepBackup);
   if (!written) return written;
+  if (moved) {
+    show.venueGltf = moved->venueGltf;
+    show.profiles = std::move(moved->profiles);
+  }
   show.file = file;
   show.stamp = stampOf(text);
   return Ok{};

@@ -512,7 +512,8 @@ def build_venue():
     # Set pieces that cut shadows through the beams.
     setp = g.node("Set")
     col = g.node("column", t=(COLUMN["x"], DECK_TOP_Y, COLUMN["z"]), parent=setp)
-    g.node("column_shaft", cyl["set"], s=(COLUMN["radius"], COLUMN["height"], COLUMN["radius"]), parent=col)
+    # The shaft ends 5 cm inside the capital, so no two faces share the capital's top plane.
+    g.node("column_shaft", cyl["set"], s=(COLUMN["radius"], COLUMN["height"] - 0.05, COLUMN["radius"]), parent=col)
     g.node("column_plinth", box["set"], t=(0, 0.1, 0), s=(0.7, 0.2, 0.7), parent=col)
     g.node("column_capital", box["set"], t=(0, COLUMN["height"] - 0.1, 0), s=(0.7, 0.2, 0.7), parent=col)
 
@@ -916,7 +917,7 @@ def write_show(path, cues):
         "venue": {"gltf": "venue/theatre.gltf"},
         "atmosphere": {"scattering": 0.03, "absorption": 0.0, "phase": "hazy", "g": 0.0, "ambient": 0.25},
         "cameras": [
-            {"name": "FOH", "position": [0.0, 4.5, 13.0], "target": [0.0, 4.0, -3.0], "fov_y": 50.0},
+            {"name": "FOH", "position": [0.0, 4.2, 10.5], "target": [0.0, 4.2, -3.0], "fov_y": 42.0},
             {"name": "Side", "position": [7.0, 6.0, 2.5], "target": [-1.0, 3.5, -4.5], "fov_y": 60.0},
             {"name": "Onstage", "position": [0.0, 1.7, -0.6], "target": [0.0, 7.0, -3.6], "fov_y": 75.0},
         ],

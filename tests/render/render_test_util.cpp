@@ -52,6 +52,31 @@ void addBox(Venue& v, glm::vec3 lo, glm::vec3 hi) {
   v.boundsMax = glm::max(v.boundsMax, hi);
 }
 
+void addSphere(Venue& v, glm::vec3 centre, float radiusM, int segments, int rings) {
+  Primitive p;
+  p.name = "sphere";
+  p.material = static_cast<int>(v.materials.size()) - 1;
+  for (int j = 0; j <= rings; ++j) {
+    const float th = 3.14159265f * static_cast<float>(j) / static_cast<float>(rings);
+    for (int i = 0; i <= segments; ++i) {
+      const float ph = 2.0f * 3.14159265f * static_cast<float>(i) / static_cast<float>(segments);
+      const glm::vec3 n(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
+      p.positions.push_back(centre + radiusM * n);
+      p.normals.push_back(n);
+      p.uvs.push_back(glm::vec2(0));
+    }
+  }
+  for (int j = 0; j < rings; ++j)
+    for (int i = 0; i < segments; ++i) {
+      const uint32_t a = static_cast<uint32_t>(j * (segments + 1) + i), b = a + 1,
+                     c = a + static_cast<uint32_t>(segments + 1), d = c + 1;
+      p.indices.insert(p.indices.end(), {a, c, b, b, c, d});
+    }
+  v.primitives.push_back(p);
+  v.boundsMin = glm::min(v.boundsMin, centre - glm::vec3(radiusM));
+  v.boundsMax = glm::max(v.boundsMax, centre + glm::vec3(radiusM));
+}
+
 BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldDeg, float peakCd, glm::vec3 color) {
   BeamState b;
   b.pose.lensPosition = lensPos;

@@ -37,6 +37,8 @@ class GlTest : public ::testing::Test {
 Venue floorVenue(float sizeM, float albedo);
 // Adds an axis-aligned box (12 triangles) to a venue, with the venue's last material.
 void addBox(Venue& v, glm::vec3 lo, glm::vec3 hi);
+// Adds a UV sphere (segments around, rings top to bottom) with the venue's last material.
+void addSphere(Venue& v, glm::vec3 centre, float radiusM, int segments = 32, int rings = 16);
 // A beam of a parametric distribution (beam/field angles, peak cd) at pos, aimed along dir.
 BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldDeg, float peakCd,
                    glm::vec3 color = glm::vec3(1.0f));

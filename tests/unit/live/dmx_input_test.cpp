@@ -114,6 +114,10 @@ TEST(DmxInput, CountsEveryKindOfDrop) {
   EXPECT_EQ(s.late, 1u);
   EXPECT_EQ(s.terminated, 1u);
   EXPECT_TRUE(input.sources().empty());
+  // The first malformed packets are kept in full: sender, byte and what was expected.
+  ASSERT_EQ(s.firstMalformed.size(), 3u);
+  EXPECT_EQ(s.firstMalformed[0].str(), "sACN from 127.0.0.1:1:byte 108: priority is above 200; expected 0..200");
+  EXPECT_EQ(s.firstMalformed[2].place, "byte 3");
 }
 
 TEST(DmxInput, PreviewDataCanBeRefused) {

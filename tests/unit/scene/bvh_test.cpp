@@ -55,7 +55,7 @@ Venue clutter() {
   addFloor(v, 0.0f, 10.0f);
   addBox(v, {-2, 0, -1}, {-1, 2, 1});
   addBox(v, {1.5f, 0.5f, -3}, {3, 1, 2});
-  addUvSphere(v, {0, 1.5f, 2}, 1.0f, 24, 48);
+  addUvSphere(v, {0, 1.5f, 2}, 1.0f, 16, 32);
   addUvSphere(v, {-3, 3, -3}, 0.5f, 8, 16);
   return v;
 }
@@ -67,7 +67,7 @@ TEST(Bvh, ClosestHitMatchesBruteForceOnRandomRays) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
   int hits = 0, compared = 0;
-  for (int i = 0; i < 3000; ++i) {
+  for (int i = 0; i < 2000; ++i) {
     const glm::vec3 o(6.0f * u(rng), 0.2f + 4.0f * (u(rng) + 1.0f), 6.0f * u(rng));
     const glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + glm::vec3(0, -0.3f, 0));
     const Brute ref = bruteForce(v, o, d);
@@ -84,8 +84,8 @@ TEST(Bvh, ClosestHitMatchesBruteForceOnRandomRays) {
     const glm::vec3 x = o + h.tM * d;
     EXPECT_NEAR(glm::length(s.positionM - x), 0.0f, 1e-4f) << "ray " << i;
   }
-  EXPECT_GT(compared, 2900);
-  EXPECT_GT(hits, 1000);  // the rays mostly point at the scene: a real comparison
+  EXPECT_GT(compared, 1900);
+  EXPECT_GT(hits, 600);  // the rays mostly point at the scene: a real comparison
 }
 
 TEST(Bvh, TreeIsShallowForManyTriangles) {

@@ -95,7 +95,7 @@ TEST(ReferenceVolume, StepInsideTheDistributionIsResolved) {
 // hazy phase written out: independent of the reference's cone chord and angular march.
 double quadratureLin(const BeamState& beam, const MediumState& m, glm::dvec3 e, glm::dvec3 v,
                      double tEnd) {
-  const int n = 400000;
+  const int n = 100000;
   const double sigmaT = m.scattering + m.absorption;
   const glm::dvec3 lens(beam.pose.lensPosition);
   const glm::dvec3 zb(beam.pose.zb);
@@ -209,7 +209,7 @@ TEST(ReferenceVolume, HalvingTheStepChangesNoPixelByMoreThanHalfAPercent) {
   Venue v;
   const FrameState f = convergenceScene(v);
   const Bvh bvh(v);
-  const int w = 40, h = 30;
+  const int w = 32, h = 24;
   const ReferenceOptions base;
   ReferenceOptions fine = base;
   fine.maxStepAngleRad = base.maxStepAngleRad / 2;

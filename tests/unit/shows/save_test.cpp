@@ -101,6 +101,25 @@ TEST(SaveShow, RefusesToOverwriteAFileTheShowDidNotComeFrom) {
   EXPECT_FALSE(saveShow(fresh, dir.path / "no-such-folder" / "x.haze.json").ok());
 }
 
+TEST(SaveShow, SavingIntoAnotherFolderKeepsPathsPointingAtTheSameFiles) {
+  ScratchDir dir;
+  auto s = loadShow(test::validShowPath());
+  ASSERT_TRUE(s.ok());
+  fs::create_directories(dir.path / "deeper/still");
+  const fs::path file = dir.path / "deeper/still/moved.haze.json";
+  ASSERT_TRUE(saveShow(*s, file).ok());
+  auto moved = loadShow(file);
+  ASSERT_TRUE(moved.ok());
+  // The profile file and the venue are the same files as before, reached from the new folder.
+  EXPECT_TRUE(fs::equivalent(moved->resolve(moved->profiles.at("spot").path),
+                             test::showsDir() / "profiles/test-spot.json"));
+  EXPECT_TRUE(fs::equivalent(moved->resolve(moved->venueGltf), test::showsDir() /
+                                                                   "../../../../shared/data/venues/Cube/Cube.gltf"));
+  EXPECT_TRUE(loadProfiles(*moved).ok());
+  EXPECT_EQ(s->profiles.at("spot").path, moved->profiles.at("spot").path);  // the saved show follows too
+  EXPECT_EQ(s->file, file);
+}
+
 TEST(SaveShow, RemovesLeftoversOfDeadWritersOnly) {
   ScratchDir dir;
   Show s = showIn(dir.path);

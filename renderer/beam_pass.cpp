@@ -1,0 +1,201 @@
+#include "renderer/beam_pass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "renderer/gl/program.h"
+
+namespace haze {
+namespace {
+
+constexpr GLuint kSceneDepthUnit = 5, kScatterUnit = 6, kScatterDepthUnit = 7;
+
+struct CameraBasis {
+  glm::vec3 forward, right, up;
+  float tanY, tanX;
+};
+
+CameraBasis basis(const CameraState& c, float aspect) {
+  CameraBasis b;
+  b.forward = glm::normalize(c.target - c.position);
+  b.right = glm::normalize(glm::cross(b.forward, c.up));
+  b.up = glm::cross(b.right, b.forward);
+  b.tanY = std::tan(glm::radians(c.fovYDeg) * 0.5f);
+  b.tanX = b.tanY * aspect;
+  return b;
+}
+
+void setCameraUniforms(GLuint prog, const CameraState& c, float aspect) {
+  const CameraBasis b = basis(c, aspect);
+  glProgramUniform3fv(prog, 20, 1, glm::value_ptr(c.position));
+  glProgramUniform3fv(prog, 21, 1, glm::value_ptr(b.forward));
+  const glm::vec3 rt = b.right * b.tanX, ut = b.up * b.tanY;
+  glProgramUniform3fv(prog, 22, 1, glm::value_ptr(rt));
+  glProgramUniform3fv(prog, 23, 1, glm::value_ptr(ut));
+  glProgramUniform2f(prog, 24, c.nearM, c.farM);
+}
+
+}  // namespace
+
+BeamFootprint beamFootprint(const BeamState& beam, const CameraState& camera, float aspect, float coneLengthM) {
+  BeamFootprint fp;
+  const CameraBasis b = basis(camera, aspect);
+  const float cutoff = beam.optics.cutoffHalfAngleRad();
+  // The cone's hull: the lens and its cap at coneLengthM. 16 points on a circle widened by
+  // 1 / cos(pi / 16) circumscribe the cap, so the projected hull contains the cone.
+  const float capRadius = coneLengthM * std::tan(cutoff) / std::cos(3.14159265f / 16.0f);
+  const glm::vec3 cap = beam.pose.lensPosition + beam.pose.zb * coneLengthM;
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  float zNear = 1e30f, zFar = -1e30f;
+  bool crossesEyePlane = false;
+  auto addPoint = [&](const glm::vec3& p) {
+    const glm::vec3 d = p - camera.position;
+    const float z = glm::dot(d, b.forward);
+    zNear = std::min(zNear, z);
+    zFar = std::max(zFar, z);
+    if (z <= camera.nearM) {
+      crossesEyePlane = true;
+      return;
+    }
+    const glm::vec2 ndc(glm::dot(d, b.right) / (z * b.tanX), glm::dot(d, b.up) / (z * b.tanY));
+    lo = glm::min(lo, ndc);
+    hi = glm::max(hi, ndc);
+  };
+  addPoint(beam.pose.lensPosition);
+  for (int i = 0; i < 16; ++i) {
+    const float a = static_cast<float>(i) * 3.14159265f / 8.0f;
+    addPoint(cap + capRadius * (std::cos(a) * beam.pose.xb + std::sin(a) * beam.pose.yb));
+  }
+  if (zFar <= camera.nearM) return fp;  // wholly behind the camera
+  if (crossesEyePlane) {
+    lo = glm::vec2(-1.0f);
+    hi = glm::vec2(1.0f);
+  }
+  lo = glm::max(lo, glm::vec2(-1.0f));
+  hi = glm::min(hi, glm::vec2(1.0f));
+  if (lo.x >= hi.x || lo.y >= hi.y) return fp;
+  fp.visible = true;
+  fp.rectNdc = glm::vec4(lo, hi);
+  fp.zNear = std::max(zNear, camera.nearM);
+  fp.zFar = std::min(zFar, camera.farM);
+  fp.visible = fp.zFar > fp.zNear;
+  return fp;
+}
+
+Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings& settings) {
+  BeamPass p;
+  p.settings_ = settings;
+  p.settings_.planes = std::clamp(settings.planes, 1, 4096);
+  p.settings_.scatterDivisor = std::clamp(settings.scatterDivisor, 1, 8);
+  p.settings_.frames = std::clamp(settings.frames, 1, 1024);
+  p.width_ = width;
+  p.height_ = height;
+  p.lowW_ = std::max(1, (width + p.settings_.scatterDivisor - 1) / p.settings_.scatterDivisor);
+  p.lowH_ = std::max(1, (height + p.settings_.scatterDivisor - 1) / p.settings_.scatterDivisor);
+
+  auto planes = gl::buildProgram({.label = "virtual_planes", .vertex = "planes.vert.glsl", .fragment = "planes.frag.glsl"});
+  if (!planes) return planes.error();
+  auto composite = gl::buildProgram({.label = "scatter_composite", .vertex = "fullscreen.vert.glsl",
+                                     .fragment = "composite.frag.glsl"});
+  if (!composite) return composite.error();
+  auto depth = gl::buildProgram({.label = "scatter_depth", .vertex = "fullscreen.vert.glsl",
+                                 .fragment = "scatter_depth.frag.glsl"});
+  if (!depth) return depth.error();
+  p.planes_ = std::move(*planes);
+  p.composite_ = std::move(*composite);
+  p.scatterDepth_ = std::move(*depth);
+
+  p.scatter_ = gl::Texture(GL_TEXTURE_2D, "scatter");
+  glTextureStorage2D(p.scatter_.id(), 1, GL_RGBA32F, p.lowW_, p.lowH_);
+  glTextureParameteri(p.scatter_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(p.scatter_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  p.scatterFbo_ = gl::Framebuffer("scatter_fbo");
+  glNamedFramebufferTexture(p.scatterFbo_.id(), GL_COLOR_ATTACHMENT0, p.scatter_.id(), 0);
+  p.lowDepth_ = gl::Texture(GL_TEXTURE_2D, "scatter_depth");
+  glTextureStorage2D(p.lowDepth_.id(), 1, GL_R32F, p.lowW_, p.lowH_);
+  glTextureParameteri(p.lowDepth_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(p.lowDepth_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  p.lowDepthFbo_ = gl::Framebuffer("scatter_depth_fbo");
+  glNamedFramebufferTexture(p.lowDepthFbo_.id(), GL_COLOR_ATTACHMENT0, p.lowDepth_.id(), 0);
+  p.vao_ = gl::VertexArray("planes_vao");
+  return p;
+}
+
+uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, float coneLengthM,
+                          GLuint sceneDepth, GLuint radianceFbo, bool accumulate) {
+  const MediumState& med = frame.medium;
+  if (med.scattering <= 0.0f || frame.beams.empty()) return 0;
+  const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+  glBindTextureUnit(kSceneDepthUnit, sceneDepth);
+  glBindVertexArray(vao_.id());
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+
+  if (settings_.scatterDivisor > 1) {  // the scene depth at each low-resolution texel
+    glBindFramebuffer(GL_FRAMEBUFFER, lowDepthFbo_.id());
+    glViewport(0, 0, lowW_, lowH_);
+    glDisable(GL_BLEND);
+    glUseProgram(scatterDepth_.id());
+    setCameraUniforms(scatterDepth_.id(), frame.camera, aspect);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+
+  glBindFramebuffer(GL_FRAMEBUFFER, scatterFbo_.id());
+  glViewport(0, 0, lowW_, lowH_);
+  if (!accumulate) {
+    const float zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(scatterFbo_.id(), GL_COLOR, 0, zero);
+    accumulated_ = 0;
+  }
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glBlendEquation(GL_FUNC_ADD);
+  const GLuint prog = planes_.id();
+  glUseProgram(prog);
+  setCameraUniforms(prog, frame.camera, aspect);
+  glProgramUniform1f(prog, 3, med.scattering);
+  glProgramUniform1f(prog, 4, med.extinction());
+  glProgramUniform2f(prog, 5, static_cast<float>(lowW_), static_cast<float>(lowH_));
+  glProgramUniform1i(prog, 7, settings_.jitter ? 1 : 0);
+  glProgramUniform1i(prog, 25, static_cast<int>(med.phase));
+  glProgramUniform1f(prog, 26, med.g);
+  beams.bind(0, 1, 2);
+
+  uint64_t fragments = 0;
+  for (int f = 0; f < settings_.frames; ++f) {
+    // Golden-ratio steps give well-spread offsets for any number of accumulated frames.
+    const float jitter = std::fmod(static_cast<float>(accumulated_) * 0.6180339887f, 1.0f);
+    glProgramUniform1f(prog, 6, jitter);
+    for (size_t i = 0; i < frame.beams.size(); ++i) {
+      const BeamFootprint fp = beamFootprint(frame.beams[i], frame.camera, aspect, coneLengthM);
+      if (!fp.visible) continue;
+      const float dz = (fp.zFar - fp.zNear) / static_cast<float>(settings_.planes);
+      glProgramUniform4fv(prog, 0, 1, glm::value_ptr(fp.rectNdc));
+      glProgramUniform2f(prog, 1, fp.zNear, dz);
+      glProgramUniform1i(prog, 2, static_cast<int>(i));
+      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, settings_.planes);
+      const double px = (fp.rectNdc.z - fp.rectNdc.x) * 0.5 * lowW_ * (fp.rectNdc.w - fp.rectNdc.y) * 0.5 * lowH_;
+      fragments += static_cast<uint64_t>(px) * static_cast<uint64_t>(settings_.planes);
+    }
+    ++accumulated_;
+  }
+
+  // Composite onto the radiance target, averaging the accumulated frames.
+  glBindFramebuffer(GL_FRAMEBUFFER, radianceFbo);
+  glViewport(0, 0, width_, height_);
+  glUseProgram(composite_.id());
+  setCameraUniforms(composite_.id(), frame.camera, aspect);
+  glProgramUniform1f(composite_.id(), 0, 1.0f / static_cast<float>(accumulated_));
+  glProgramUniform1i(composite_.id(), 1, settings_.scatterDivisor > 1 ? 1 : 0);
+  glBindTextureUnit(kScatterUnit, scatter_.id());
+  glBindTextureUnit(kScatterDepthUnit, lowDepth_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_BLEND);
+  return fragments;
+}
+
+}  // namespace haze

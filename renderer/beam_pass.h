@@ -1,0 +1,57 @@
+// In-scattering by virtual planes (haze.md, "Rendering shafts of light"): per beam, planes
+// parallel to the screen at equal view-depth steps over only that beam's depth range and screen
+// footprint; each plane samples the light map, the shadow map, the phase function and both
+// attenuations, and adds into a float scattering buffer (optionally at lower resolution),
+// which is then upsampled (depth-aware) onto the radiance target.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+#include "fixtures/result.h"
+#include "renderer/beam_resources.h"
+#include "renderer/gl/objects.h"
+#include "renderer/scene/frame_state.h"
+
+namespace haze {
+
+struct BeamPassSettings {
+  int planes = 48;          // per beam, over its depth range
+  int scatterDivisor = 1;   // 1 full resolution, 2 half (depth-aware upsample), ...
+  int frames = 1;           // jittered frames accumulated per render
+  bool jitter = true;       // per-pixel plane offsets; off = plane centres (the paper's slicing)
+};
+
+// What a beam covers on screen and in view depth.
+struct BeamFootprint {
+  bool visible = false;
+  glm::vec4 rectNdc{-1, -1, 1, 1};
+  float zNear = 0, zFar = 0;
+};
+BeamFootprint beamFootprint(const BeamState& beam, const CameraState& camera, float aspect, float coneLengthM);
+
+class BeamPass {
+ public:
+  static Result<BeamPass> create(int width, int height, const BeamPassSettings& settings);
+
+  // Adds in-scattering into radianceFbo (whose depth texture is sceneDepth). With
+  // accumulate, the scattering of earlier calls is kept and this call's frames (jittered on
+  // from frame number firstFrame) are added: progressive refinement while nothing moves.
+  // Returns the plane fragments rasterised (footprint pixels times planes), for the bench.
+  uint64_t render(const FrameState& frame, const BeamResources& beams, float coneLengthM, GLuint sceneDepth,
+                  GLuint radianceFbo, bool accumulate = false);
+  const BeamPassSettings& settings() const { return settings_; }
+  int accumulatedFrames() const { return accumulated_; }
+
+ private:
+  BeamPassSettings settings_;
+  int width_ = 0, height_ = 0, lowW_ = 0, lowH_ = 0;
+  gl::Program planes_, composite_, scatterDepth_;
+  gl::Texture scatter_, lowDepth_;
+  gl::Framebuffer scatterFbo_, lowDepthFbo_;
+  gl::VertexArray vao_;
+  int accumulated_ = 0;
+};
+
+}  // namespace haze

@@ -1,0 +1,18 @@
+// The eye ray of a pixel and the scene distance along it (physics.md, "What a pixel is").
+layout(location = 20) uniform vec3 uEye;
+layout(location = 21) uniform vec3 uForward;    // unit view axis
+layout(location = 22) uniform vec3 uRightTan;   // right * tan(fov_x / 2)
+layout(location = 23) uniform vec3 uUpTan;      // up * tan(fov_y / 2)
+layout(location = 24) uniform vec2 uNearFar;    // the projection's near and far (view depth, m)
+layout(binding = 5) uniform sampler2D uSceneDepth;  // full-resolution depth buffer
+
+// Unnormalised ray with dot(v, uForward) = 1, so a view depth z is the point eye + z * v.
+vec3 eyeRay(vec2 ndc) { return uForward + ndc.x * uRightTan + ndc.y * uUpTan; }
+
+// View depth of the first surface at a texture coordinate (far when nothing is hit).
+float sceneViewDepth(vec2 uv) {
+  float d = textureLod(uSceneDepth, uv, 0.0).r;
+  float n = uNearFar.x, f = uNearFar.y;
+  if (d >= 1.0) return f;
+  return 2.0 * n * f / (f + n - (2.0 * d - 1.0) * (f - n));
+}

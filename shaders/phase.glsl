@@ -1,0 +1,14 @@
+// Phase functions of physics.md, normalised over the sphere; cosA = dot(w_in, w_out).
+layout(location = 25) uniform int uPhase;   // 0 hazy, 1 isotropic, 2 Henyey-Greenstein
+layout(location = 26) uniform float uG;
+
+float phaseFunction(float cosA) {
+  const float PI_ = 3.14159265358979323846;
+  if (uPhase == 1) return 1.0 / (4.0 * PI_);
+  if (uPhase == 2) {
+    float d = 1.0 + uG * uG - 2.0 * uG * cosA;
+    return (1.0 - uG * uG) / (4.0 * PI_ * d * sqrt(d));
+  }
+  float c2 = 0.5 * (1.0 + cosA);  // cos^2(a/2)
+  return (1.0 + 9.0 * c2 * c2 * c2) / (13.0 * PI_);
+}
