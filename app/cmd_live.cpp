@@ -210,9 +210,29 @@ int runLive(const Args& args) {
   Result<ProfileSet> profiles = loadProfiles(*show);
   if (!profiles) return fail(profiles.error().str());
 
+  // Patched fixtures that DMX cannot drive are named once, so a dark fixture is explained.
+  for (const FixtureDef& f : show->fixtures) {
+    if (!f.patch) continue;
+    auto p = profiles->find(f.profile);
+    const bool hasMode = p != profiles->end() && p->second &&
+                         std::any_of(p->second->modes.begin(), p->second->modes.end(),
+                                     [&](const DmxMode& m) { return m.name == f.mode || f.mode.empty(); });
+    if (!hasMode) {
+      std::fprintf(stderr, "haze live: fixture %d: profile \"%s\" has no DMX mode \"%s\"; it stays dark\n",
+                   f.id, f.profile.c_str(), f.mode.c_str());
+    }
+  }
+
   auto live = LiveReceiver::open(*show, *profiles, options);
   if (!live) return fail(live.error().str());
   LiveReceiver& receiver = **live;
+  // Handlers first: a test (or a user) may interrupt as soon as the ports are printed.
+  struct sigaction sa {}, oldInt{}, oldTerm{};
+  sa.sa_handler = onSignal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, &oldInt);
+  sigaction(SIGTERM, &sa, &oldTerm);
+  gStop = 0;
   if (receiver.udp().artNetPort()) {
     std::fprintf(stderr, "haze live: Art-Net on %s:%d (haze universe = Port-Address + 1)\n",
                  options.udp.bindAddress.c_str(), receiver.udp().artNetPort());
@@ -225,12 +245,6 @@ int runLive(const Args& args) {
     std::fprintf(stderr, "haze live: %s\n", note.c_str());
   }
 
-  struct sigaction sa {}, oldInt{}, oldTerm{};
-  sa.sa_handler = onSignal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, &oldInt);
-  sigaction(SIGTERM, &sa, &oldTerm);
-  gStop = 0;
   const double start = LiveReceiver::nowS();
   while (!gStop) {
     const double elapsed = LiveReceiver::nowS() - start;

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   if (cmd == "state") return haze::runState(rest);
   if (cmd == "validate") return haze::runValidate(rest);
   if (cmd == "fixture") return haze::runFixture(rest);
+  if (cmd == "bench") return haze::runBench(rest);
   if (cmd == "open") return haze::runGui(rest);
   if (cmd == "--help" || cmd == "-h" || cmd == "help") {
     std::fputs(kHelp, stdout);

@@ -12,10 +12,19 @@ RenderSettings renderSettingsFor(Quality q, int width, int height) {
   s.width = width;
   s.height = height;
   switch (q) {
-    case Quality::Draft: s.lightMapSize = 256; s.shadowMapSize = 512; break;
-    case Quality::Default: s.lightMapSize = 512; s.shadowMapSize = 1024; break;
-    case Quality::High: s.lightMapSize = 1024; s.shadowMapSize = 2048; break;
-    case Quality::Reference: s.lightMapSize = 1024; s.shadowMapSize = 2048; break;
+    case Quality::Draft:
+      s = {.width = width, .height = height, .lightMapSize = 256, .shadowMapSize = 512, .planes = 24,
+           .scatterDivisor = 2, .frames = 1};
+      break;
+    case Quality::Default:
+      s = {.width = width, .height = height, .lightMapSize = 512, .shadowMapSize = 1024, .planes = 48,
+           .scatterDivisor = 2, .frames = 1};
+      break;
+    case Quality::High:
+    case Quality::Reference:
+      s = {.width = width, .height = height, .lightMapSize = 1024, .shadowMapSize = 2048, .planes = 128,
+           .scatterDivisor = 1, .frames = 4};
+      break;
   }
   return s;
 }

@@ -97,7 +97,8 @@ Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings&
   p.lowW_ = std::max(1, (width + p.settings_.scatterDivisor - 1) / p.settings_.scatterDivisor);
   p.lowH_ = std::max(1, (height + p.settings_.scatterDivisor - 1) / p.settings_.scatterDivisor);
 
-  auto planes = gl::buildProgram({.label = "virtual_planes", .vertex = "planes.vert.glsl", .fragment = "planes.frag.glsl"});
+  auto planes = gl::buildProgram({.label = "virtual_planes", .vertex = "planes.vert.glsl", .fragment = "planes.frag.glsl",
+                                  .defines = settings.fused ? std::vector<std::string>{"FUSED"} : std::vector<std::string>{}});
   if (!planes) return planes.error();
   auto composite = gl::buildProgram({.label = "scatter_composite", .vertex = "fullscreen.vert.glsl",
                                      .fragment = "composite.frag.glsl"});
@@ -161,6 +162,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, f
   glProgramUniform1f(prog, 4, med.extinction());
   glProgramUniform2f(prog, 5, static_cast<float>(lowW_), static_cast<float>(lowH_));
   glProgramUniform1i(prog, 7, settings_.jitter ? 1 : 0);
+  glProgramUniform1i(prog, 8, settings_.planes);
   glProgramUniform1i(prog, 25, static_cast<int>(med.phase));
   glProgramUniform1f(prog, 26, med.g);
   beams.bind(0, 1, 2);
@@ -177,9 +179,10 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, f
       glProgramUniform4fv(prog, 0, 1, glm::value_ptr(fp.rectNdc));
       glProgramUniform2f(prog, 1, fp.zNear, dz);
       glProgramUniform1i(prog, 2, static_cast<int>(i));
-      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, settings_.planes);
+      const int instances = settings_.fused ? 1 : settings_.planes;
+      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, instances);
       const double px = (fp.rectNdc.z - fp.rectNdc.x) * 0.5 * lowW_ * (fp.rectNdc.w - fp.rectNdc.y) * 0.5 * lowH_;
-      fragments += static_cast<uint64_t>(px) * static_cast<uint64_t>(settings_.planes);
+      fragments += static_cast<uint64_t>(px) * static_cast<uint64_t>(instances);
     }
     ++accumulated_;
   }

@@ -21,6 +21,9 @@ struct BeamPassSettings {
   int scatterDivisor = 1;   // 1 full resolution, 2 half (depth-aware upsample), ...
   int frames = 1;           // jittered frames accumulated per render
   bool jitter = true;       // per-pixel plane offsets; off = plane centres (the paper's slicing)
+  // One fragment per pixel walks the planes its ray crosses inside the cone (the planes clipped
+  // to the light volume per pixel), instead of one fragment per pixel and plane. Same samples.
+  bool fused = true;
 };
 
 // What a beam covers on screen and in view depth.

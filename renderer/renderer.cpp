@@ -66,7 +66,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   impl->postProgram = std::move(*post);
   auto pass = BeamPass::create(settings.width, settings.height,
                                {.planes = settings.planes, .scatterDivisor = settings.scatterDivisor,
-                                .frames = settings.frames, .jitter = settings.jitter});
+                                .frames = settings.frames, .jitter = settings.jitter,
+                                .fused = settings.fusedPlanes});
   if (!pass) return pass.error();
   impl->beamPass = std::move(*pass);
 
@@ -117,9 +118,19 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
 
+  // Depth first, so the lighting below runs once per pixel, not once per overlapping surface.
+  const glm::mat4 viewProj = cameraViewProjection(frame.camera, w, h);
+  glUseProgram(m.shadowProgram.id());
+  glProgramUniformMatrix4fv(m.shadowProgram.id(), 0, 1, GL_FALSE, glm::value_ptr(viewProj));
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  m.venue.bind();
+  for (const GpuVenue::Draw& d : m.venue.draws()) m.venue.draw(d);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthFunc(GL_EQUAL);
+  glDepthMask(GL_FALSE);
+
   const GLuint prog = m.surfaceProgram.id();
   glUseProgram(prog);
-  const glm::mat4 viewProj = cameraViewProjection(frame.camera, w, h);
   glProgramUniformMatrix4fv(prog, 0, 1, GL_FALSE, glm::value_ptr(viewProj));
   glProgramUniform3fv(prog, 1, 1, glm::value_ptr(frame.camera.position));
   glProgramUniform1f(prog, 2, sigmaT);
@@ -137,6 +148,8 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     if (mat.emissiveTexture >= 0) glBindTextureUnit(kEmissiveTexUnit, m.venue.texture(mat.emissiveTexture).id());
     m.venue.draw(d);
   }
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
   glFinish();
   times_.surfacesMs = msSince(t0);
 

@@ -23,6 +23,7 @@ struct RenderSettings {
   int scatterDivisor = 1;   // scattering buffer at 1/n resolution, depth-aware upsample
   int frames = 1;           // jittered frames accumulated per render
   bool jitter = true;
+  bool fusedPlanes = true;  // see BeamPassSettings::fused
 };
 
 struct DisplaySettings {

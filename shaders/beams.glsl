@@ -29,6 +29,15 @@ vec3 beamIntensity(Beam b, vec3 x, out vec3 wl, out float r) {
   return cd * b.color.rgb;
 }
 
+// V(x) in the medium: one hardware 2x2 PCF tap (shafts are soft; the surfaces get five).
+float beamVisibilityVolume(Beam b, vec3 x) {
+  vec4 c = b.shadowViewProj * vec4(x, 1.0);
+  if (c.w <= 0.0) return 1.0;
+  vec3 s = c.xyz / c.w * 0.5 + 0.5;
+  if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
+  return texture(uShadowMaps, vec4(s.xy, b.zb.w, s.z));
+}
+
 // V(x): 1 where the lens sees x, 0 in shadow; hardware 2x2 PCF plus four taps around it.
 float beamVisibility(Beam b, vec3 x) {
   vec4 c = b.shadowViewProj * vec4(x, 1.0);

@@ -31,6 +31,10 @@ void main() {
 
   vec3 irradiance = vec3(0.0);
   for (int i = 0; i < uBeamCount; ++i) {
+    // Most beams miss most pixels: test the cone with two loads before anything else.
+    vec4 lens = beams[i].lensPos;
+    vec3 d = vPosition - lens.xyz;
+    if (dot(d, beams[i].zb.xyz) <= lens.w * length(d)) continue;
     vec3 wl;
     float r;
     vec3 I = beamIntensity(beams[i], vPosition, wl, r);

@@ -3,6 +3,8 @@ layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
 layout(location = 0) uniform mat4 uViewProj;
+// The depth pre-pass and the lit pass must produce bit-identical depths (GL_EQUAL test).
+invariant gl_Position;
 
 out vec3 vPosition;
 out vec3 vNormal;

@@ -54,6 +54,7 @@ struct DmxInputOptions {
 
 class DmxInput {
  public:
+  // show and profiles are referenced, not copied: they must outlive the DmxInput.
   DmxInput(const Show& show, const ProfileSet& profiles, DmxInputOptions options = {});
 
   // One datagram. senderIpv4 is in host byte order (Art-Net sources are told apart by it).

@@ -411,6 +411,7 @@ COLUMN = {"x": -2.5, "z": -4.5, "radius": 0.25, "height": 4.0}
 SPHERE = {"centre": (0.9, DECK_TOP_Y + 0.55, -1.8), "radius": 0.55}
 STAIR = {"origin": (2.6, DECK_TOP_Y, -3.6), "yaw": -20.0}
 TREE = (3.9, DECK_TOP_Y, -1.0)
+LAMP = (-3.7, DECK_TOP_Y, -1.3)   # a practical standard lamp, downstage left
 FRAME = {"centre": (0.0, 4.6, -6.3), "size": 2.4, "yaw": 10.0}
 CYC_Z = -7.15
 
@@ -548,7 +549,7 @@ def build_venue():
 
     g.node("sphere", sphere, t=SPHERE["centre"], s=(SPHERE["radius"],) * 3, parent=setp)
 
-    lamp = g.node("practical_lamp", t=(-1.4, DECK_TOP_Y, -1.4), parent=setp)
+    lamp = g.node("practical_lamp", t=LAMP, parent=setp)
     g.node("lamp_base", cyl["black"], s=(0.18, 0.03, 0.18), parent=lamp)
     g.node("lamp_pole", cyl["black"], s=(0.015, 1.35, 0.015), parent=lamp)
     g.node("lamp_shade", cyl["lamp"], t=(0, 1.3, 0), s=(0.2, 0.3, 0.2), parent=lamp)
@@ -759,7 +760,7 @@ T = {
     "stair_top": add(STAIR["origin"], m3v(rot_y(STAIR["yaw"]), (0.0, 1.0, -0.6))),  # top tread's centre
     "frame_centre": FRAME["centre"],
     "tree_crown": add(TREE, (0.0, 0.8 * 2.8, 0.0)),
-    "lamp": (-1.4, DECK_TOP_Y + 1.45, -1.4),
+    "lamp": add(LAMP, (0.0, 1.45, 0.0)),
     "dsc": (0.0, DECK_TOP_Y, -1.2),
 }
 
@@ -918,7 +919,7 @@ def write_show(path, cues):
         "atmosphere": {"scattering": 0.03, "absorption": 0.0, "phase": "hazy", "g": 0.0, "ambient": 0.25},
         "cameras": [
             {"name": "FOH", "position": [0.0, 4.2, 10.5], "target": [0.0, 4.2, -3.0], "fov_y": 42.0},
-            {"name": "Side", "position": [7.0, 6.0, 2.5], "target": [-1.0, 3.5, -4.5], "fov_y": 60.0},
+            {"name": "Side", "position": [5.0, 6.0, 4.0], "target": [-1.5, 3.5, -4.0], "fov_y": 55.0},
             {"name": "Onstage", "position": [0.0, 1.7, -0.6], "target": [0.0, 7.0, -3.6], "fov_y": 75.0},
         ],
         "profiles": {k: "profiles/" + v[0] for k, v in PROFILES.items()},

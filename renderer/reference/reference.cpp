@@ -244,6 +244,12 @@ PixelRadiance radianceAlongRay(const Bvh& bvh, const FrameState& frame, const gl
   return radiance(bvh, frame, activeBeams(frame), origin, dir, options);
 }
 
+PixelRadiance radianceAtPixel(const Bvh& bvh, const FrameState& frame, int width, int height,
+                              int i, int j, const ReferenceOptions& options) {
+  const glm::vec3 dir = cameraRayDirection(frame.camera, width, height, i + 0.5f, j + 0.5f);
+  return radianceAlongRay(bvh, frame, frame.camera.position, dir, options);
+}
+
 ReferenceImages renderReferenceImages(const Bvh& bvh, const FrameState& frame, int width,
                                       int height, const ReferenceOptions& options) {
   assert(width > 0 && height > 0 && "renderReference: validate the image size before calling");

@@ -56,6 +56,10 @@ glm::vec3 cameraRayDirection(const CameraState& camera, int width, int height, f
 PixelRadiance radianceAlongRay(const Bvh& bvh, const FrameState& frame, const glm::vec3& origin,
                                const glm::vec3& dir, const ReferenceOptions& options = {});
 
+// Pixel (i, j) of a width x height image of the frame's camera, exactly as the image has it.
+PixelRadiance radianceAtPixel(const Bvh& bvh, const FrameState& frame, int width, int height,
+                              int i, int j, const ReferenceOptions& options = {});
+
 // The whole image, with L_surf and L_in apart (the accuracy metric of physics.md looks at the
 // pixels where L_in is above 1 % of its maximum).
 struct ReferenceImages {

@@ -1,15 +1,18 @@
 // Sends sACN (E1.31) to haze from the npm `sacn` package, an encoder independent of haze's.
-// usage: node send_sacn.js PORT ROUNDS STREAMS_JSON [BAD_PACKETS]
+// usage: node send_sacn.js PORT ROUNDS STREAMS_JSON [BAD_PACKETS] [multicast]
 //   STREAMS_JSON: [{"universe": 1, "priority": 100, "cid": 1, "name": "main",
 //                   "slots": {"1": 255, "2": 128}}, ...]  (raw DMX values, unicast to 127.0.0.1)
 //   Every stream is sent once a round, a round every 100 ms; after round 10 (or the last) the
 //   script prints "ready" so a test knows levels have arrived. BAD_PACKETS datagrams with an
 //   out-of-range priority (250) are sent once at the start, for the malformed counters.
+//   With "multicast" the streams go to their groups 239.255.hi.lo through the loopback
+//   interface instead of unicast to 127.0.0.1.
 'use strict';
 const dgram = require('dgram');
 const { Sender, Packet } = require('sacn');
 
-const [port, roundsArg, streamsJson, badArg] = process.argv.slice(2);
+const [port, roundsArg, streamsJson, badArg, mode] = process.argv.slice(2);
+const multicast = mode === 'multicast';
 if (!port || !roundsArg || !streamsJson) {
   console.error('usage: node send_sacn.js PORT ROUNDS STREAMS_JSON [BAD_PACKETS]');
   process.exit(2);
@@ -23,7 +26,7 @@ const senders = streams.map((s) => {
     sender: new Sender({
       universe: s.universe,
       port: Number(port),
-      useUnicastDestination: '127.0.0.1',
+      useUnicastDestination: multicast ? undefined : '127.0.0.1',
       defaultPacketOptions: { cid, sourceName: s.name || 'haze test', priority: s.priority || 100,
                               useRawDmxValues: true },
     }),
@@ -32,6 +35,12 @@ const senders = streams.map((s) => {
 });
 
 async function main() {
+  if (multicast) {
+    for (const s of senders) {
+      await new Promise((resolve) => s.sender.socket.bind(0, '127.0.0.1', resolve));
+      s.sender.socket.setMulticastInterface('127.0.0.1');
+    }
+  }
   if (bad > 0) {
     const socket = dgram.createSocket('udp4');
     const buffer = new Packet({ universe: 1, sequence: 0, payload: {}, sourceName: 'bad',

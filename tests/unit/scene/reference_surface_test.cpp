@@ -95,6 +95,20 @@ TEST(ReferenceSurface, OccluderCastsAnExactShadow) {
   }
 }
 
+TEST(ReferenceSurface, LensClearanceIgnoresGeometryAtTheLens) {
+  // A housing 2 cm under the lens blocks everything, unless it is within the clearance.
+  Venue v = floorVenue();
+  test::addFloor(v, kH - 0.02f, 0.2f);
+  const Bvh bvh(v);
+  FrameState f = downBeamFrame(test::parametric(20, 35, 1000), 35);
+  f.camera.position = {3, 2, 0};  // below the housing
+  const glm::vec3 dir = glm::normalize(glm::vec3(0.3f, 0, 0.2f) - f.camera.position);
+  EXPECT_EQ(radianceAlongRay(bvh, f, f.camera.position, dir).total(), glm::vec3(0.0f));
+  ReferenceOptions clear;
+  clear.lensClearanceM = 0.05f;
+  EXPECT_GT(radianceAlongRay(bvh, f, f.camera.position, dir, clear).total().r, 1.0f);
+}
+
 TEST(ReferenceSurface, SurfacesAreTwoSided) {
   const FrameState f = downBeamFrame(test::parametric(20, 35, 1000), 35);
   const Venue up = floorVenue(false), down = floorVenue(true);
@@ -151,6 +165,13 @@ TEST(ReferenceSurface, BackgroundIsAttenuatedOverTheFarDistance) {
   EXPECT_FALSE(p.hitSurface);
   EXPECT_NEAR(p.depthM, 30.0f, 1e-6f);
   EXPECT_NEAR(p.total().g, 2.0f * std::exp(-0.07f * 30.0f), 1e-6f);
+  // A wall beyond far is not seen: the background is.
+  Venue wall = test::emptyVenue();
+  test::addQuad(wall, {-50, -50, -40}, {50, -50, -40}, {50, 50, -40}, {-50, 50, -40});
+  const Bvh wallBvh(wall);
+  const PixelRadiance q = radianceAlongRay(wallBvh, f, {0, 0, 0}, {0, 0, -1});
+  EXPECT_FALSE(q.hitSurface);
+  EXPECT_NEAR(q.total().g, 2.0f * std::exp(-0.07f * 30.0f), 1e-6f);
 }
 
 TEST(ReferenceSurface, DarkBeamsAddNothing) {

@@ -254,6 +254,10 @@ TEST(ReferenceVolume, ThreadCountDoesNotChangeTheImage) {
   const ReferenceImages a = renderReferenceImages(bvh, f, 16, 12, one);
   const ReferenceImages b = renderReferenceImages(bvh, f, 16, 12, three);
   EXPECT_EQ(a.total.pixels, b.total.pixels);
+  // The single-pixel entry point gives the image's own values.
+  for (int j : {0, 5, 11})
+    for (int i : {0, 7, 15})
+      EXPECT_EQ(radianceAtPixel(bvh, f, 16, 12, i, j).total(), a.total.at(i, j)) << i << "," << j;
   for (size_t k = 0; k < a.total.pixels.size(); ++k) {
     const glm::vec3 sum = a.surface.pixels[k] + a.inScattered.pixels[k];
     EXPECT_NEAR(glm::length(a.total.pixels[k] - sum), 0.0f, 1e-6f * glm::length(sum) + 1e-12f);

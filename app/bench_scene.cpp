@@ -1,0 +1,95 @@
+#include "app/bench_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "fixtures/photometry.h"
+#include "fixtures/pose.h"
+
+namespace haze {
+namespace {
+
+void addBox(Venue& v, int material, glm::vec3 lo, glm::vec3 hi) {
+  Primitive p;
+  p.name = "box";
+  p.material = material;
+  const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (int a = 0; a < 3; ++a)
+    for (int s = 0; s < 2; ++s) {
+      const glm::vec3 n = axes[a] * (s ? 1.0f : -1.0f);
+      const glm::vec3 u = axes[(a + 1) % 3], w = axes[(a + 2) % 3];
+      const glm::vec3 c = (lo + hi) * 0.5f + n * (hi - lo) * 0.5f;
+      const glm::vec3 hu = u * (hi - lo) * 0.5f, hw = w * (hi - lo) * 0.5f;
+      const auto base = static_cast<uint32_t>(p.positions.size());
+      for (const glm::vec3& q : {c - hu - hw, c + hu - hw, c + hu + hw, c - hu + hw}) {
+        p.positions.push_back(q);
+        p.normals.push_back(n);
+      }
+      p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+  v.primitives.push_back(std::move(p));
+  v.boundsMin = glm::min(v.boundsMin, lo);
+  v.boundsMax = glm::max(v.boundsMax, hi);
+}
+
+}  // namespace
+
+Venue benchVenue() {
+  Venue v;
+  v.materials.push_back(Material{.name = "default"});
+  v.materials.push_back(Material{.name = "deck", .baseColor = glm::vec4(0.2f, 0.2f, 0.2f, 1)});
+  v.materials.push_back(Material{.name = "walls", .baseColor = glm::vec4(0.35f, 0.35f, 0.38f, 1)});
+  v.materials.push_back(Material{.name = "set", .baseColor = glm::vec4(0.6f, 0.55f, 0.5f, 1)});
+  v.boundsMin = glm::vec3(1e9f);
+  v.boundsMax = glm::vec3(-1e9f);
+  addBox(v, 1, {-10, -0.1f, -8}, {10, 0, 6});      // deck and house floor
+  addBox(v, 2, {-10, 0, -8.2f}, {10, 9, -8});      // back wall
+  addBox(v, 2, {-10.2f, 0, -8}, {-10, 9, 6});      // side walls
+  addBox(v, 2, {10, 0, -8}, {10.2f, 9, 6});
+  for (float x : {-4.0f, 0.0f, 4.0f}) addBox(v, 3, {x - 0.3f, 0, -3.3f}, {x + 0.3f, 3.5f, -2.7f});  // columns
+  for (float x : {-2.5f, -1.5f, -0.5f, 0.5f, 1.5f, 2.5f})                                       // slatted panel
+    addBox(v, 3, {x - 0.3f, 4.5f, -1.05f}, {x + 0.3f, 4.6f, -0.95f});
+  return v;
+}
+
+FrameState benchFrame(int fixtures) {
+  FrameState f;
+  f.camera.position = {0.0f, 4.0f, 14.0f};
+  f.camera.target = {0.0f, 3.0f, -2.0f};
+  f.camera.fovYDeg = 45.0f;
+  f.medium.scattering = 0.03f;
+  f.medium.ambient = glm::vec3(0.02f);
+  auto dist = std::make_shared<Distribution>(*parametricDistribution(14.0f, 20.0f, 60000.0f));
+  for (int i = 0; i < fixtures; ++i) {
+    // Two truss lines, fixtures spread along them, aimed to cross on the deck.
+    const int perLine = (fixtures + 1) / 2;
+    const int line = i % 2, k = i / 2;
+    const float x = perLine > 1 ? -8.0f + 16.0f * static_cast<float>(k) / static_cast<float>(perLine - 1) : 0.0f;
+    const glm::vec3 pos(x, 7.5f, line ? -4.0f : 1.0f);
+    const glm::vec3 target(-x * 0.6f, 0.0f, line ? -1.0f : -3.0f);
+    const glm::vec3 d = glm::normalize(target - pos);
+    // Pan and tilt that aim the head at the target (physics.md: beam = Ry(pan) Rx(tilt) (0,-1,0)).
+    const float tilt = std::acos(std::clamp(-d.y, -1.0f, 1.0f));
+    const float pan = std::atan2(-d.x, -d.z);
+    BeamState b;
+    b.fixtureId = i + 1;
+    b.pose = beamPose(pos, glm::vec3(0.0f), glm::degrees(pan), glm::degrees(tilt), glm::vec3(0, -0.25f, 0));
+    b.optics.distribution = dist;
+    b.optics.profileFieldAngleDeg = 20.0f;
+    b.optics.fieldAngleDeg = 20.0f;
+    b.optics.dimmer = 1.0f;
+    const float hue = static_cast<float>(i) / static_cast<float>(std::max(fixtures, 1));
+    b.optics.color = glm::vec3(0.6f + 0.4f * std::cos(6.2832f * hue), 0.6f + 0.4f * std::cos(6.2832f * (hue - 0.33f)),
+                               0.6f + 0.4f * std::cos(6.2832f * (hue - 0.67f)));
+    b.poseKey = static_cast<uint64_t>(i + 1);
+    b.opticsKey = 1;  // one distribution for all: light maps are equal
+    f.beams.push_back(std::move(b));
+  }
+  return f;
+}
+
+}  // namespace haze

@@ -1,0 +1,138 @@
+// haze bench [--fixtures N] [--width W --height H] [--quality Q] [--frames K] [--compare-reference] --json
+// Renders the bench scene (app/bench_scene.*) headless and reports the median time per frame
+// and per pass, with shadow and light maps cached after the first (cold) frame, as while a
+// designer looks at a cue; the cold frame is reported apart.
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/bench_scene.h"
+#include "app/commands.h"
+#include "app/render_session.h"
+#include "renderer/context.h"
+#include "renderer/reference/reference.h"
+#include "renderer/renderer.h"
+
+namespace haze {
+namespace {
+
+int fail(const std::string& line) {
+  std::fprintf(stderr, "haze bench: %s\n", line.c_str());
+  return 1;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+int runBench(const Args& args) {
+  int fixtures = 16, width = 1280, height = 720, frames = 5;
+  std::string quality = "default";
+  bool json = false, compare = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto intValue = [&](int& dst, int lo, int hi) {
+      if (i + 1 >= args.size()) return false;
+      const std::string& s = args[++i];
+      const auto r = std::from_chars(s.data(), s.data() + s.size(), dst);
+      return r.ec == std::errc() && r.ptr == s.data() + s.size() && dst >= lo && dst <= hi;
+    };
+    if (a == "--fixtures") { if (!intValue(fixtures, 0, 4096)) return fail("--fixtures needs 0..4096"); }
+    else if (a == "--width") { if (!intValue(width, 1, 16384)) return fail("--width needs 1..16384"); }
+    else if (a == "--height") { if (!intValue(height, 1, 16384)) return fail("--height needs 1..16384"); }
+    else if (a == "--frames") { if (!intValue(frames, 1, 1000)) return fail("--frames needs 1..1000"); }
+    else if (a == "--quality" && i + 1 < args.size()) quality = args[++i];
+    else if (a == "--json") json = true;
+    else if (a == "--compare-reference") compare = true;
+    else return fail("unknown option '" + a + "' (usage: haze bench [--fixtures N] [--width W --height H] "
+                     "[--quality Q] [--frames K] [--compare-reference] [--json])");
+  }
+  auto q = parseQuality(quality);
+  if (!q) return fail(q.error().str());
+  auto ctx = createHeadlessContext();
+  if (!ctx) return fail(ctx.error().str());
+  const Venue venue = benchVenue();
+  const FrameState frame = benchFrame(fixtures);
+  auto renderer = Renderer::create(venue, renderSettingsFor(*q, width, height));
+  if (!renderer) return fail(renderer.error().str());
+
+  std::vector<double> total, shadow, surfaces, beams, post;
+  double coldMs = 0.0;
+  uint64_t fragments = 0;
+  for (int f = 0; f <= frames; ++f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    (*renderer)->render(frame);
+    (void)(*renderer)->readDisplay({});
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const PassTimes& t = (*renderer)->lastTimes();
+    if (f == 0) {  // shadow maps and light maps are made here, cached after
+      coldMs = ms;
+      continue;
+    }
+    total.push_back(ms);
+    shadow.push_back(t.shadowMapsMs);
+    surfaces.push_back(t.surfacesMs);
+    beams.push_back(t.beamsMs);
+    post.push_back(t.postMs);
+    fragments = t.planeFragments;
+  }
+  const RenderSettings rs = (*renderer)->settings();
+  nlohmann::ordered_json out;
+  out["device"] = (*ctx)->description();
+  out["width"] = width;
+  out["height"] = height;
+  out["fixtures"] = fixtures;
+  out["quality"] = quality;
+  out["planes_per_beam"] = rs.planes;
+  out["scatter_divisor"] = rs.scatterDivisor;
+  out["jittered_frames"] = rs.frames;
+  out["frames_measured"] = frames;
+  out["median_frame_ms"] = median(total);
+  out["cold_frame_ms"] = coldMs;
+  out["pass_ms"] = {{"shadow_maps", median(shadow)}, {"surfaces", median(surfaces)}, {"planes", median(beams)},
+                    {"post", median(post)}};
+  out["plane_fragments"] = fragments;
+  if (compare) {
+    const ImageRGB gpu = (*renderer)->readRadiance();
+    const auto t0 = std::chrono::steady_clock::now();
+    const ImageRGB ref = renderReference(venue, frame, width, height);
+    const double refMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    float maxL = 0.0f;
+    for (const glm::vec3& p : ref.pixels) maxL = std::max({maxL, p.r, p.g, p.b});
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < ref.pixels.size(); ++i)
+      for (int c = 0; c < 3; ++c)
+        if (ref.pixels[i][c] > 0.01f * maxL) {
+          sum += std::abs(gpu.pixels[i][c] - ref.pixels[i][c]) / ref.pixels[i][c];
+          ++n;
+        }
+    out["reference_ms"] = refMs;
+    out["mean_relative_error"] = n ? sum / static_cast<double>(n) : 0.0;
+    out["speedup_vs_reference"] = median(total) > 0 ? refMs / median(total) : 0.0;
+  }
+  if (json) {
+    std::printf("%s\n", out.dump(2).c_str());
+  } else {
+    std::printf("%d fixtures at %dx%d, %s: %.1f ms per frame (median of %d; cold %.1f ms)\n", fixtures, width, height,
+                quality.c_str(), median(total), frames, coldMs);
+    std::printf("  shadow maps %.1f  surfaces %.1f  planes %.1f  post %.1f ms; %llu plane fragments\n",
+                median(shadow), median(surfaces), median(beams), median(post),
+                static_cast<unsigned long long>(fragments));
+    if (compare)
+      std::printf("  reference %.0f ms, mean relative error %.4f, %.0fx faster\n", out["reference_ms"].get<double>(),
+                  out["mean_relative_error"].get<double>(), out["speedup_vs_reference"].get<double>());
+  }
+  return 0;
+}
+
+}  // namespace haze

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# `haze fixture info FILE --json` on a native profile, an IES and an LDT file: the facts are
+# JSON with the documented keys and the values the files imply; a bad file is one stderr line
+# and exit 1. Also validates the native profile against schemas/fixture.schema.json.
+# Usage: bash fixture_info.sh <haze-binary> <repo-root>
+set -u
+haze="$1"
+repo="$2"
+data="$repo/../shared/data"
+node_dir="$repo/tests/node"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+cat > "$tmp/par.json" <<'JSON'
+{
+  "format": "haze-fixture",
+  "version": 1,
+  "manufacturer": "Haze Tests",
+  "name": "Par 20/35",
+  "photometry": { "beam_angle": 20, "field_angle": 35, "peak_candela": 12000 },
+  "zoom": { "min": 10, "max": 50 },
+  "color": { "mixing": "rgb" },
+  "modes": [ { "name": "6ch", "channels": [ "Dimmer", "Red", "Green", "Blue", "Zoom", "Strobe" ] } ]
+}
+JSON
+
+# The profile is valid against the schema (and a broken one is not).
+if [ -x "$node_dir/node_modules/.bin/ajv" ]; then
+  (cd "$node_dir" && node_modules/.bin/ajv validate --spec=draft2020 -c ajv-formats -s "$repo/schemas/fixture.schema.json" -d "$tmp/par.json" >/dev/null 2>&1) \
+    || fail "par.json does not validate against fixture.schema.json"
+  sed 's/"rgb"/"hsv"/' "$tmp/par.json" > "$tmp/bad-schema.json"
+  (cd "$node_dir" && node_modules/.bin/ajv validate --spec=draft2020 -c ajv-formats -s "$repo/schemas/fixture.schema.json" -d "$tmp/bad-schema.json" >/dev/null 2>&1) \
+    && fail "the schema accepts colour mixing \"hsv\""
+fi
+
+# check FILE 'js expression over f (the facts)' ...
+check() {
+  local file="$1"; shift
+  "$haze" fixture info "$file" --json > "$tmp/out.json" 2> "$tmp/err.txt" || fail "fixture info $file exited $?: $(cat "$tmp/err.txt")"
+  for expr in "$@"; do
+    node -e "const f = JSON.parse(require('fs').readFileSync('$tmp/out.json', 'utf8')); if (!($expr)) { console.error(JSON.stringify(f)); process.exit(1); }" \
+      || fail "$file: expected $expr"
+  done
+}
+
+keys='["name","manufacturer","peak_candela","lumens","beam_angle","beam_angle_c0","beam_angle_c90","field_angle","field_angle_c0","field_angle_c90","symmetry","grid"].every(k => k in f)'
+
+check "$tmp/par.json" "$keys" \
+  "f.name === 'Par 20/35'" "f.manufacturer === 'Haze Tests'" \
+  "Math.abs(f.peak_candela - 12000) < 0.5" \
+  "Math.abs(f.beam_angle - 20) < 0.05" "Math.abs(f.field_angle - 35) < 0.05" \
+  "Math.abs(f.beam_angle_c0 - f.beam_angle_c90) < 1e-3" \
+  "f.symmetry === 'axial'" "f.zoom.min === 10 && f.zoom.max === 50" \
+  "f.modes[0].name === '6ch' && f.modes[0].footprint === 6" \
+  "f.lumens > 500 && f.lumens < 5000"
+
+# SOURCES.md: Ansorg stage spot, axial, 37 gammas, peak ~42,000 cd, FWHM ~10 degrees.
+check "$data/photometry/ies/hydraapi/ies_34.ies" "$keys" \
+  "f.manufacturer === 'Ansorg GmbH'" "f.symmetry === 'axial'" "f.grid.gamma === 37 && f.grid.c === 1" \
+  "f.peak_candela > 40000 && f.peak_candela < 44000" "f.beam_angle > 8 && f.beam_angle < 12" \
+  "f.field_angle > f.beam_angle"
+
+# SOURCES.md: Regent NEO U LED12800, no symmetry, 24 C x 37 gamma; 12,800 lm luminaire.
+check "$data/photometry/ldt/eulumdat-py/sample3.ldt" "$keys" \
+  "f.manufacturer === 'Regent'" "f.symmetry === 'none'" "f.grid.gamma === 37 && f.grid.c === 24" \
+  "Math.abs(f.lumens - 12800) < 128"
+
+# Bad input: one line on stderr naming the file and the line, exit status 1, nothing on stdout.
+printf 'IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 3 1 2 2 0 0 0\n1 1 0\n0 45 90\n0\n10 5 0\n' > "$tmp/typeb.ies"
+"$haze" fixture info "$tmp/typeb.ies" --json > "$tmp/out.txt" 2> "$tmp/err.txt"
+status=$?
+[ "$status" -eq 1 ] || fail "a type B IES file exited $status, expected 1"
+[ "$(wc -l < "$tmp/err.txt")" -eq 1 ] || fail "expected one stderr line, got: $(cat "$tmp/err.txt")"
+grep -q "typeb.ies:line 3: photometric type B" "$tmp/err.txt" || fail "unexpected error: $(cat "$tmp/err.txt")"
+[ ! -s "$tmp/out.txt" ] || fail "stdout is not empty on error"
+
+"$haze" fixture info "$tmp/missing.ldt" --json > /dev/null 2> "$tmp/err.txt" && fail "a missing file exited 0"
+[ "$(wc -l < "$tmp/err.txt")" -eq 1 ] || fail "expected one stderr line for a missing file"
+"$haze" fixture info > /dev/null 2> "$tmp/err.txt" && fail "no file exited 0"
+grep -q "usage" "$tmp/err.txt" || fail "no usage line without a file"
+echo "fixture_info: ok"
