@@ -6,7 +6,7 @@ JOBS       ?= $(shell nproc)
 DEMO       := examples/demo/demo.haze.json
 HAZE       := $(BUILD)/app/haze
 
-.PHONY: all deps configure build run test test-fast test-asan clean
+.PHONY: all deps configure build run test test-fast test-asan node-tools clean
 
 all: build
 
@@ -27,9 +27,14 @@ run: build
 	@ls -1 out/*.png
 	@if [ -n "$${DISPLAY:-}$${WAYLAND_DISPLAY:-}" ]; then $(HAZE) open $(DEMO); fi
 
-# Everything: the unit, render, CLI and GUI tests, then the unit tests under sanitizers.
-test: build test-asan
+# Everything: the unit tests under sanitizers, then the unit, render, CLI and GUI tests.
+test: build test-asan node-tools
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 900
+
+# Tools the tests use that this project did not write (JSON Schema validation, DMX senders),
+# pinned by tests/node/package-lock.json.
+node-tools: deps
+	@[ -d tests/node/node_modules ] || npm ci --prefix tests/node --no-audit --no-fund
 
 test-fast: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L unit

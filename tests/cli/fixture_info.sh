@@ -27,10 +27,10 @@ JSON
 
 # The profile is valid against the schema (and a broken one is not).
 if [ -x "$node_dir/node_modules/.bin/ajv" ]; then
-  (cd "$node_dir" && node_modules/.bin/ajv validate --spec=draft2020 -c ajv-formats -s "$repo/schemas/fixture.schema.json" -d "$tmp/par.json" >/dev/null 2>&1) \
+  (cd "$node_dir" && node_modules/.bin/ajv validate --spec=draft2020 -c ajv-formats --strict=true -s "$repo/schemas/fixture.schema.json" -d "$tmp/par.json" >/dev/null 2>&1) \
     || fail "par.json does not validate against fixture.schema.json"
   sed 's/"rgb"/"hsv"/' "$tmp/par.json" > "$tmp/bad-schema.json"
-  (cd "$node_dir" && node_modules/.bin/ajv validate --spec=draft2020 -c ajv-formats -s "$repo/schemas/fixture.schema.json" -d "$tmp/bad-schema.json" >/dev/null 2>&1) \
+  (cd "$node_dir" && node_modules/.bin/ajv validate --spec=draft2020 -c ajv-formats --strict=true -s "$repo/schemas/fixture.schema.json" -d "$tmp/bad-schema.json" >/dev/null 2>&1) \
     && fail "the schema accepts colour mixing \"hsv\""
 fi
 
