@@ -119,10 +119,10 @@ void printReport(const LiveReceiver& live, double seconds) {
     std::fprintf(stderr, "haze live: dropped %s\n", e.str().c_str());
   }
   for (const DmxSourceInfo& src : live.sources()) {
-    std::fprintf(stderr, "haze live: source %s %s \"%s\" universe %d priority %d%s\n",
+    const std::string name = src.name.empty() ? "" : " \"" + printable(src.name) + "\"";
+    std::fprintf(stderr, "haze live: source %s %s%s universe %d priority %d%s\n",
                  src.id.protocol == DmxProtocol::Sacn ? "sACN" : "Art-Net", src.id.str().c_str(),
-                 printable(src.name).c_str(), src.universe, src.priority,
-                 src.winning ? "" : " (outranked)");
+                 name.c_str(), src.universe, src.priority, src.winning ? "" : " (outranked)");
   }
 }
 

@@ -14,16 +14,16 @@ RenderSettings renderSettingsFor(Quality q, int width, int height) {
   switch (q) {
     case Quality::Draft:
       s = {.width = width, .height = height, .lightMapSize = 256, .shadowMapSize = 512, .planes = 24,
-           .scatterDivisor = 2, .frames = 1};
+           .scatterDivisor = 2, .frames = 1, .minSamplesPerChord = 4};
       break;
     case Quality::Default:
       s = {.width = width, .height = height, .lightMapSize = 512, .shadowMapSize = 1024, .planes = 48,
-           .scatterDivisor = 2, .frames = 1};
+           .scatterDivisor = 1, .frames = 1, .minSamplesPerChord = 16};
       break;
     case Quality::High:
     case Quality::Reference:
       s = {.width = width, .height = height, .lightMapSize = 1024, .shadowMapSize = 2048, .planes = 128,
-           .scatterDivisor = 1, .frames = 4};
+           .scatterDivisor = 1, .frames = 4, .minSamplesPerChord = 16};
       break;
   }
   return s;

@@ -163,6 +163,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, f
   glProgramUniform2f(prog, 5, static_cast<float>(lowW_), static_cast<float>(lowH_));
   glProgramUniform1i(prog, 7, settings_.jitter ? 1 : 0);
   glProgramUniform1i(prog, 8, settings_.planes);
+  glProgramUniform1i(prog, 9, settings_.minSamplesPerChord);
   glProgramUniform1i(prog, 25, static_cast<int>(med.phase));
   glProgramUniform1f(prog, 26, med.g);
   beams.bind(0, 1, 2);

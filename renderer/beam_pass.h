@@ -24,6 +24,9 @@ struct BeamPassSettings {
   // One fragment per pixel walks the planes its ray crosses inside the cone (the planes clipped
   // to the light volume per pixel), instead of one fragment per pixel and plane. Same samples.
   bool fused = true;
+  // Fused only: where a ray's chord through the cone spans fewer planes than this, the plane
+  // lattice is refined by halving for that ray, so thin-looking beams keep their detail.
+  int minSamplesPerChord = 8;
 };
 
 // What a beam covers on screen and in view depth.

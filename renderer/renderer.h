@@ -24,6 +24,7 @@ struct RenderSettings {
   int frames = 1;           // jittered frames accumulated per render
   bool jitter = true;
   bool fusedPlanes = true;  // see BeamPassSettings::fused
+  int minSamplesPerChord = 8;
 };
 
 struct DisplaySettings {

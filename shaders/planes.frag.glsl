@@ -18,6 +18,7 @@ layout(location = 5) uniform vec2 uTargetSize;   // scattering buffer size in pi
 layout(location = 6) uniform float uFrameJitter; // in [0, 1), changes per accumulated frame
 layout(location = 7) uniform int uJitter;        // 0: plane centres (no jitter)
 layout(location = 8) uniform int uPlanes;
+layout(location = 9) uniform int uMinSamples;    // per ray chord through the cone
 
 layout(location = 0) out vec4 outScatter;
 
@@ -48,6 +49,13 @@ void main() {
   float zMax = min(uDepthRange.x + dz * float(uPlanes), zScene);
   vec2 seg = coneInterval(uEye, v, b.lensPos.xyz, b.zb.xyz, b.lensPos.w * b.lensPos.w, zMin, zMax);
   if (seg.y <= seg.x) discard;
+  // A ray that crosses the cone between few planes (a beam seen from the side) gets the plane
+  // lattice refined by halving, dz / 2^k, until at least uMinSamples planes fall on its chord.
+  float crossings = (seg.y - seg.x) / dz;
+  if (crossings < float(uMinSamples)) {
+    int k = min(int(ceil(log2(float(uMinSamples) / max(crossings, 1e-3)))), 8);
+    dz = dz / float(1 << k);
+  }
   int k0 = int(ceil((seg.x - uDepthRange.x) / dz - xi));
   int k1 = int(floor((seg.y - uDepthRange.x) / dz - xi));
   vec3 L = vec3(0.0);

@@ -6,9 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 
 #include <glm/geometric.hpp>
 
+#include "app/render_session.h"
 #include "render_test_util.h"
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
@@ -34,14 +36,9 @@ class BeamsVsReference : public GlTest {
   }
 };
 
-RenderSettings high(int w, int h) {
-  return {.width = w, .height = h, .lightMapSize = 1024, .shadowMapSize = 2048, .planes = 192, .scatterDivisor = 1,
-          .frames = 4};
-}
-RenderSettings standard(int w, int h) {
-  return {.width = w, .height = h, .lightMapSize = 512, .shadowMapSize = 1024, .planes = 48, .scatterDivisor = 1,
-          .frames = 2};
-}
+// The presets of `haze render --quality` (app/render_session.cpp), as users get them.
+RenderSettings high(int w, int h) { return renderSettingsFor(Quality::High, w, h); }
+RenderSettings standard(int w, int h) { return renderSettingsFor(Quality::Default, w, h); }
 
 // One spot in haze with a sphere in its beam: the shadow shaft below the sphere.
 TEST_F(BeamsVsReference, SpotWithSphereShadowShaft) {
@@ -55,6 +52,79 @@ TEST_F(BeamsVsReference, SpotWithSphereShadowShaft) {
   frame.beams.push_back(makeBeam({0.0f, 7.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 20.0f, 30.0f, 50000.0f));
   EXPECT_LT(run("sphere_shaft_high", venue, frame, high(160, 120)).meanRelError, 0.03);
   EXPECT_LT(run("sphere_shaft_default", venue, frame, standard(160, 120)).meanRelError, 0.08);
+}
+
+// A procedural gobo: concentric rings and a bar, so the pattern has both curves and straight
+// edges (white passes, black blocks).
+std::shared_ptr<GoboImage> ringsGobo() {
+  auto g = std::make_shared<GoboImage>();
+  g->name = "rings";
+  g->width = g->height = 256;
+  g->transmittance.resize(256 * 256);
+  for (int y = 0; y < 256; ++y)
+    for (int x = 0; x < 256; ++x) {
+      const float u = (x + 0.5f) / 128.0f - 1.0f, v = (y + 0.5f) / 128.0f - 1.0f;
+      const float rr = std::sqrt(u * u + v * v);
+      const bool ring = std::fmod(rr * 4.0f, 1.0f) < 0.5f;
+      const bool bar = std::abs(u) < 0.08f;
+      g->transmittance[static_cast<size_t>(y) * 256 + x] = (ring && !bar) ? 1.0f : 0.0f;
+    }
+  return g;
+}
+
+// A gobo'd spot seen from the side: the pattern in the beam and on the floor.
+TEST_F(BeamsVsReference, GoboSpotFromTheSide) {
+  Venue venue = floorVenue(16.0f, 0.5f);
+  FrameState frame;
+  frame.camera.position = {9.0f, 2.5f, 0.0f};
+  frame.camera.target = {0.0f, 2.0f, 0.0f};
+  frame.camera.fovYDeg = 50.0f;
+  frame.medium.scattering = 0.05f;
+  BeamState b = makeBeam({0.0f, 6.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 18.0f, 26.0f, 60000.0f);
+  b.optics.gobo = ringsGobo();
+  b.optics.goboRotationDeg = 20.0f;
+  frame.beams.push_back(b);
+  EXPECT_LT(run("gobo_side_high", venue, frame, high(160, 120)).meanRelError, 0.03);
+  EXPECT_LT(run("gobo_side_default", venue, frame, standard(160, 120)).meanRelError, 0.08);
+}
+
+// Eight coloured fixtures crossing around a set piece (a box that shadows some of them).
+TEST_F(BeamsVsReference, EightColouredBeamsAroundASetPiece) {
+  Venue venue = floorVenue(20.0f, 0.4f);
+  venue.materials.push_back(Material{.name = "set", .baseColor = glm::vec4(0.6f, 0.6f, 0.6f, 1.0f)});
+  addBox(venue, {-0.6f, 0.0f, -0.6f}, {0.6f, 2.4f, 0.6f});
+  FrameState frame;
+  frame.camera.position = {0.0f, 4.0f, 13.0f};
+  frame.camera.target = {0.0f, 2.0f, 0.0f};
+  frame.camera.fovYDeg = 50.0f;
+  frame.medium.scattering = 0.04f;
+  frame.medium.ambient = glm::vec3(0.01f);
+  for (int i = 0; i < 8; ++i) {
+    const float a = static_cast<float>(i) * 3.14159265f / 4.0f;
+    const glm::vec3 pos(5.0f * std::cos(a), 7.0f, 5.0f * std::sin(a));
+    const glm::vec3 target(-1.5f * std::cos(a), 0.0f, -1.5f * std::sin(a));
+    const glm::vec3 colour(0.5f + 0.5f * std::cos(a), 0.5f + 0.5f * std::cos(a - 2.1f), 0.5f + 0.5f * std::cos(a + 2.1f));
+    BeamState b = makeBeam(pos, target - pos, 12.0f, 18.0f, 40000.0f, colour);
+    b.poseKey = static_cast<uint64_t>(i + 1);
+    frame.beams.push_back(b);
+  }
+  EXPECT_LT(run("eight_beams_high", venue, frame, high(160, 120)).meanRelError, 0.03);
+  EXPECT_LT(run("eight_beams_default", venue, frame, standard(160, 120)).meanRelError, 0.08);
+}
+
+// The camera inside a beam looking towards the lamp: strong forward scattering of the hazy
+// phase function, and the 1/r^2 peak near the lens.
+TEST_F(BeamsVsReference, CameraInsideBeamLookingAtTheLamp) {
+  Venue venue = floorVenue(20.0f, 0.3f);
+  FrameState frame;
+  frame.camera.position = {0.0f, 1.6f, 3.0f};
+  frame.camera.target = {0.0f, 6.0f, -1.0f};
+  frame.camera.fovYDeg = 60.0f;
+  frame.medium.scattering = 0.03f;
+  const glm::vec3 lens(0.0f, 7.0f, -2.0f);
+  frame.beams.push_back(makeBeam(lens, frame.camera.position - lens, 24.0f, 36.0f, 30000.0f));
+  EXPECT_LT(run("inside_beam_high", venue, frame, high(160, 120)).meanRelError, 0.03);
+  EXPECT_LT(run("inside_beam_default", venue, frame, standard(160, 120)).meanRelError, 0.08);
 }
 
 }  // namespace

@@ -189,7 +189,12 @@ TEST(SaveShow, SurvivesBeingKilledAtAnyMoment) {
   // depends on the machine's timing.
   std::cout << "[ info ] " << sawTemp << " of " << runs << " kills left a temporary file behind\n";
   ASSERT_TRUE(writeFileAtomically(file, textA, true).ok());
-  EXPECT_TRUE(leftovers(dir.path).empty()) << "leftovers of killed writers are cleaned by the next save";
+  // Leftovers of killed writers are cleaned by the next save; one whose PID a busy machine has
+  // already given to another process is kept (it might be a live writer's) until a later save.
+  for (const std::string& name : leftovers(dir.path)) {
+    pid_t pid = static_cast<pid_t>(std::stol(name.substr(name.find(".tmp-") + 5)));
+    EXPECT_EQ(kill(pid, 0), 0) << name << " was left behind although process " << pid << " is gone";
+  }
 }
 
 }  // namespace

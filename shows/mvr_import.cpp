@@ -1,0 +1,457 @@
+// MVR -> haze show: walks GeneralSceneDescription.xml (layers, group objects, scene objects,
+// trusses, fixtures, focus points, symbols), composes the matrices down the tree, imports each
+// fixture's embedded GDTF once, and writes the show, its GDTF folder and its venue.
+#include "shows/mvr_import.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <set>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <pugixml.hpp>
+
+#include "fixtures/gdtf.h"
+#include "fixtures/zip_archive.h"
+#include "shows/mvr_venue.h"
+#include "shows/show_save.h"
+
+namespace haze {
+
+namespace {
+
+constexpr const char* kSceneXml = "GeneralSceneDescription.xml";
+constexpr int kMaxDepth = 32;  // nesting of groups and symbols; bounds a symbol that names itself
+
+struct FixtureSource {
+  std::string spec, mode, name, fixtureId, address, focus, place;
+  glm::dmat4 worldMm{1.0};
+  int extraAddresses = 0;
+};
+
+struct GdtfEntry {
+  bool ok = false;
+  std::string file;           // archive entry
+  std::string profileKey;     // key in Show::profiles
+  std::vector<std::string> modes;
+  glm::vec3 pivotOffsetM{0.0f};
+  float panMin = -1e9f, panMax = 1e9f, tiltMin = -1e9f, tiltMax = 1e9f;
+};
+
+class SceneWalker {
+ public:
+  SceneWalker(const std::string& text, std::vector<std::string>& warnings) : text_(text), warnings_(warnings) {}
+
+  std::string place(const pugi::xml_node& n) const {
+    const auto offset = static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, n.offset_debug()));
+    const std::size_t line = 1 + static_cast<std::size_t>(std::count(text_.begin(), text_.begin() + static_cast<std::ptrdiff_t>(std::min(offset, text_.size())), '\n'));
+    std::string s = std::string(kSceneXml) + " line " + std::to_string(line) + " <" + n.name();
+    if (const char* nm = n.attribute("name").value(); *nm) s += std::string(" name=\"") + nm + "\"";
+    return s + ">";
+  }
+  void warn(const pugi::xml_node& n, const std::string& message) { warnings_.push_back(place(n) + ": " + message); }
+  void warnOnce(const std::string& key, const pugi::xml_node& n, const std::string& message) {
+    if (warned_.insert(key).second) warn(n, message);
+  }
+
+  glm::dmat4 localMatrix(const pugi::xml_node& n) {
+    pugi::xml_node m = n.child("Matrix");
+    if (!m) return glm::dmat4(1.0);
+    auto parsed = parseMvrMatrix(m.text().as_string());
+    if (!parsed.ok()) {
+      warn(m, parsed.error().message + "; the identity is used");
+      return glm::dmat4(1.0);
+    }
+    return *parsed;
+  }
+
+  void walkScene(const pugi::xml_node& scene) {
+    for (pugi::xml_node s : scene.child("AUXData").children("Symdef"))
+      symdefs_[lower(s.attribute("uuid").value())] = s;
+    pugi::xml_node layers = scene.child("Layers");
+    for (pugi::xml_node layer : layers.children()) {
+      if (std::string(layer.name()) != "Layer") {
+        warnOnce(std::string("layers/") + layer.name(), layer, "unknown element in <Layers>; ignored");
+        continue;
+      }
+      walkChildren(layer.child("ChildList"), localMatrix(layer), 0);
+    }
+  }
+
+  std::vector<FixtureSource> fixtures;
+  std::vector<MvrGeometryInstance> geometry;
+  std::map<std::string, glm::dvec3> focusPointsMm;  // uuid (lower case) -> world position
+
+ private:
+  static std::string lower(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  }
+
+  void walkChildren(const pugi::xml_node& list, const glm::dmat4& parent, int depth) {
+    if (!list) return;
+    if (depth > kMaxDepth) {
+      warn(list, "nesting deeper than " + std::to_string(kMaxDepth) + " levels; the rest is left out");
+      return;
+    }
+    for (pugi::xml_node obj : list.children()) {
+      if (obj.type() != pugi::node_element) continue;
+      const std::string kind = obj.name();
+      const glm::dmat4 world = parent * localMatrix(obj);
+      if (kind == "GroupObject") {
+        walkChildren(obj.child("ChildList"), world, depth + 1);
+      } else if (kind == "Fixture") {
+        addFixture(obj, world);
+        walkChildren(obj.child("ChildList"), world, depth + 1);
+      } else if (kind == "SceneObject" || kind == "Truss" || kind == "Support" || kind == "VideoScreen" ||
+                 kind == "Projector" || kind == "FocusPoint") {
+        if (kind == "FocusPoint") focusPointsMm[lower(obj.attribute("uuid").value())] = glm::dvec3(world[3]);
+        if (!obj.child("GDTFSpec").text().empty() && kind != "FocusPoint")
+          warnOnce("gdtf-" + kind, obj, "a " + kind + " with a GDTFSpec is imported as geometry only, not as a fixture");
+        addGeometries(obj.child("Geometries"), world, depth + 1);
+        walkChildren(obj.child("ChildList"), world, depth + 1);
+      } else {
+        warnOnce("object/" + kind, obj, "unknown scene element <" + kind + ">; ignored");
+      }
+    }
+  }
+
+  void addGeometries(const pugi::xml_node& list, const glm::dmat4& parent, int depth) {
+    if (!list) return;
+    if (depth > kMaxDepth) {
+      warn(list, "symbols nested deeper than " + std::to_string(kMaxDepth) + " levels (a symbol using itself?); left out");
+      return;
+    }
+    for (pugi::xml_node g : list.children()) {
+      if (g.type() != pugi::node_element) continue;
+      const std::string kind = g.name();
+      const glm::dmat4 world = parent * localMatrix(g);
+      if (kind == "Geometry3D") {
+        const std::string file = g.attribute("fileName").value();
+        if (file.empty()) {
+          warn(g, "Geometry3D without fileName; ignored");
+          continue;
+        }
+        geometry.push_back({file, world, place(g)});
+      } else if (kind == "Symbol") {
+        auto it = symdefs_.find(lower(g.attribute("symdef").value()));
+        if (it == symdefs_.end()) {
+          warn(g, std::string("Symbol names symdef \"") + g.attribute("symdef").value() + "\", which <AUXData> does not define; ignored");
+          continue;
+        }
+        addGeometries(it->second.child("ChildList"), world, depth + 1);
+      } else {
+        warnOnce("geometry/" + kind, g, "unknown geometry element <" + kind + ">; ignored");
+      }
+    }
+  }
+
+  void addFixture(const pugi::xml_node& obj, const glm::dmat4& world) {
+    FixtureSource f;
+    f.place = place(obj);
+    f.worldMm = world;
+    f.name = obj.attribute("name").value();
+    f.spec = obj.child("GDTFSpec").text().as_string();
+    f.mode = obj.child("GDTFMode").text().as_string();
+    f.fixtureId = obj.child("FixtureID").text().as_string();
+    f.focus = lower(obj.child("Focus").text().as_string());
+    pugi::xml_node first;
+    for (pugi::xml_node a : obj.child("Addresses").children("Address")) {
+      if (!first) first = a;
+      else ++f.extraAddresses;
+      if (a.attribute("break").as_int(0) == 0 && first != a && f.address.empty()) first = a;
+    }
+    if (first) f.address = first.text().as_string();
+    if (f.extraAddresses > 0)
+      warnOnce("breaks", obj, "further DMX breaks (<Address break=\"N\">) are not imported; the first address is used");
+    static const std::set<std::string> known = {"Matrix", "GDTFSpec", "GDTFMode", "FixtureID", "Focus", "Addresses",
+                                                "ChildList", "Geometries", "UnitNumber", "FixtureTypeId", "CustomId",
+                                                "Classing", "Mappings"};
+    for (pugi::xml_node c : obj.children()) {
+      if (c.type() != pugi::node_element || known.count(c.name())) continue;
+      std::string what = std::string("<") + c.name() + "> of fixtures is not used by haze; ignored";
+      if (std::string(c.name()) == "Color") what = "<Color> (the fixture's colour in drawings) is not a light colour in haze; ignored";
+      if (std::string(c.name()) == "CastShadow") what = "<CastShadow> is not imported: every haze fixture casts shadows; ignored";
+      warnOnce(std::string("fixture/") + c.name(), c, what);
+    }
+    fixtures.push_back(std::move(f));
+  }
+
+  const std::string& text_;
+  std::vector<std::string>& warnings_;
+  std::set<std::string> warned_;
+  std::map<std::string, pugi::xml_node> symdefs_;
+};
+
+// "SHOW.haze.json" -> "SHOW"
+std::string showStem(const std::filesystem::path& file) {
+  std::string name = file.filename().string();
+  for (const char* ext : {".haze.json", ".json"})
+    if (name.size() > std::strlen(ext) && name.compare(name.size() - std::strlen(ext), std::string::npos, ext) == 0)
+      return name.substr(0, name.size() - std::strlen(ext));
+  return name;
+}
+
+std::string safeFileName(std::string s) {
+  for (char& c : s)
+    if (c == '/' || c == '\\' || c == ':' || static_cast<unsigned char>(c) < 32) c = '_';
+  return s;
+}
+
+// The archive entry a GDTFSpec names: as written, or with ".gdtf" added (Vectorworks leaves it off).
+std::string findGdtfEntry(const ZipArchive& zip, const std::string& spec) {
+  if (spec.empty()) return "";
+  if (zip.contains(spec)) {
+    for (const ZipEntry& e : zip.entries())
+      if (e.name == spec) return spec;
+    for (const ZipEntry& e : zip.entries()) {
+      std::string a = e.name, b = spec;
+      std::transform(a.begin(), a.end(), a.begin(), [](unsigned char c) { return std::tolower(c); });
+      std::transform(b.begin(), b.end(), b.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (a == b) return e.name;
+    }
+  }
+  if (spec.size() < 5 || spec.substr(spec.size() - 5) != ".gdtf") return findGdtfEntry(zip, spec + ".gdtf");
+  return "";
+}
+
+// pan and tilt (degrees) that aim a fixture with rotation r at a direction d (haze world):
+// beam = R * Ry(pan) * Rx(tilt) * (0, -1, 0) = R * (-sin t sin p, -cos t, -sin t cos p).
+std::pair<float, float> aimPanTiltDeg(const glm::vec3& rotationDeg, const glm::vec3& dir) {
+  const glm::dvec3 a = glm::radians(glm::dvec3(rotationDeg));
+  const double cx = std::cos(a.x), sx = std::sin(a.x), cy = std::cos(a.y), sy = std::sin(a.y), cz = std::cos(a.z), sz = std::sin(a.z);
+  const glm::dmat3 rx(1, 0, 0, 0, cx, sx, 0, -sx, cx), ry(cy, 0, -sy, 0, 1, 0, sy, 0, cy), rz(cz, sz, 0, -sz, cz, 0, 0, 0, 1);
+  const glm::dvec3 d = glm::normalize(glm::transpose(rz * ry * rx) * glm::dvec3(dir));
+  const double tilt = std::acos(std::clamp(-d.y, -1.0, 1.0));
+  const double pan = std::abs(std::sin(tilt)) < 1e-9 ? 0.0 : std::atan2(-d.x, -d.z);
+  auto tidyDeg = [](double rad) { return static_cast<float>(std::round(glm::degrees(rad) * 100.0) / 100.0); };
+  return {tidyDeg(pan), tidyDeg(tilt)};
+}
+
+}  // namespace
+
+Result<MvrImport> importMvr(const std::filesystem::path& mvrFile, const std::filesystem::path& showFile,
+                            const MvrImportOptions& options) {
+  const std::string src = mvrFile.string();
+  std::error_code ec;
+  if (!options.force && std::filesystem::exists(showFile, ec))
+    return Error{showFile.string(), "", "the show file already exists; choose another name or pass --force"};
+  auto zip = ZipArchive::open(mvrFile);
+  if (!zip.ok()) return zip.error();
+  if (!zip->contains(kSceneXml))
+    return Error{src, "", std::string("the archive has no ") + kSceneXml + "; an MVR file must contain it (is this an MVR?)"};
+  auto xmlBytes = zip->read(kSceneXml);
+  if (!xmlBytes.ok()) return xmlBytes.error();
+  const std::string xml(xmlBytes->begin(), xmlBytes->end());
+  pugi::xml_document doc;
+  const pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size());
+  if (!parsed) {
+    const auto off = static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, parsed.offset));
+    const auto line = 1 + std::count(xml.begin(), xml.begin() + static_cast<std::ptrdiff_t>(std::min(off, xml.size())), '\n');
+    return Error{src, std::string(kSceneXml) + " line " + std::to_string(line),
+                 std::string("the XML is not well-formed (") + parsed.description() + ")"};
+  }
+  pugi::xml_node root = doc.child("GeneralSceneDescription");
+  if (!root || !root.child("Scene"))
+    return Error{src, kSceneXml, "no <GeneralSceneDescription><Scene>; expected an MVR scene description"};
+
+  MvrImport out;
+  SceneWalker walker(xml, out.warnings);
+  const int verMajor = root.attribute("verMajor").as_int(1);
+  if (verMajor != 1) walker.warn(root, "MVR version " + std::to_string(verMajor) + " is not 1; read as version 1");
+  walker.walkScene(root.child("Scene"));
+
+  // Output locations, relative to the show.
+  const std::filesystem::path showDir = showFile.parent_path().empty() ? std::filesystem::path(".") : showFile.parent_path();
+  const std::string stem = showStem(showFile);
+  const std::string gdtfDirName = stem + "_gdtf";
+  std::filesystem::create_directories(showDir, ec);
+
+  Show& show = out.show;
+  show.atmosphere.scattering = 0.03f;
+  show.atmosphere.ambient = glm::vec3(0.02f);
+
+  // One import per GDTF file; its bytes are written next to the show for the profile.
+  std::map<std::string, GdtfEntry> gdtfs;  // by GDTFSpec
+  std::set<std::string> usedKeys;
+  std::set<int> takenIds;
+  for (const FixtureSource& f : walker.fixtures) {
+    if (!f.fixtureId.empty()) {
+      char* end = nullptr;
+      const long v = std::strtol(f.fixtureId.c_str(), &end, 10);
+      if (*end == '\0' && v > 0 && v < 1000000000) takenIds.insert(static_cast<int>(v));
+    }
+  }
+  std::set<int> usedIds;
+  int nextId = takenIds.empty() ? 1 : *takenIds.rbegin() + 1;
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  std::vector<std::pair<std::size_t, std::string>> focusOf;  // fixture index -> focus uuid
+
+  for (const FixtureSource& f : walker.fixtures) {
+    auto [it, fresh] = gdtfs.try_emplace(f.spec);
+    GdtfEntry& g = it->second;
+    if (fresh) {
+      g.file = findGdtfEntry(*zip, f.spec);
+      if (f.spec.empty()) {
+        out.warnings.push_back(f.place + ": fixture has no <GDTFSpec>; fixtures without a GDTF are left out");
+      } else if (g.file.empty()) {
+        out.warnings.push_back(f.place + ": GDTFSpec \"" + f.spec + "\" is not in the archive; fixtures of this type are left out");
+      } else if (auto bytes = zip->read(g.file); !bytes.ok()) {
+        out.warnings.push_back(f.place + ": " + bytes.error().str() + "; fixtures of this type are left out");
+      } else {
+        std::vector<std::uint8_t> copy = *bytes;
+        auto imported = loadGdtfFromMemory(std::move(copy), src + ":" + g.file);
+        if (!imported.ok()) {
+          out.warnings.push_back(f.place + ": its GDTF does not import (" + imported.error().str() + "); fixtures of this type are left out");
+        } else {
+          std::string base = safeFileName(g.file);
+          std::string key = base.size() > 5 && base.substr(base.size() - 5) == ".gdtf" ? base.substr(0, base.size() - 5) : base;
+          while (usedKeys.count(key)) key += "_";
+          usedKeys.insert(key);
+          g.profileKey = key;
+          const std::string rel = gdtfDirName + "/" + key + ".gdtf";
+          std::filesystem::create_directories(showDir / gdtfDirName, ec);
+          Status w = writeFileAtomically(showDir / rel, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()), false);
+          if (!w.ok()) return w.error();
+          show.profiles[key] = ProfileRef{rel, std::nullopt, false};
+          for (const auto& m : imported->profile->modes) g.modes.push_back(m.name);
+          g.pivotOffsetM = imported->pivotOffsetM;
+          g.panMin = imported->profile->panDeg.min;
+          g.panMax = imported->profile->panDeg.max;
+          g.tiltMin = imported->profile->tiltDeg.min;
+          g.tiltMax = imported->profile->tiltDeg.max;
+          for (const std::string& w2 : imported->warnings) out.warnings.push_back(g.file + ": " + w2);
+          g.ok = true;
+        }
+      }
+    }
+    if (!g.ok) continue;
+
+    FixtureDef def;
+    def.name = f.name.empty() ? g.profileKey : f.name;
+    def.profile = g.profileKey;
+    def.mode = f.mode;
+    if (std::find(g.modes.begin(), g.modes.end(), f.mode) == g.modes.end()) {
+      def.mode = g.modes.empty() ? "" : g.modes.front();
+      out.warnings.push_back(f.place + ": GDTFMode \"" + f.mode + "\" is not a mode of " + g.file + "; its first mode \"" + def.mode + "\" is used");
+    }
+    // Id: the FixtureID when it is a positive number not used yet, else the next free one.
+    int id = 0;
+    {
+      char* end = nullptr;
+      const long v = f.fixtureId.empty() ? 0 : std::strtol(f.fixtureId.c_str(), &end, 10);
+      if (v > 0 && v < 1000000000 && end != nullptr && *end == '\0' && !usedIds.count(static_cast<int>(v))) id = static_cast<int>(v);
+      else if (v > 0 && usedIds.count(static_cast<int>(v)))
+        out.warnings.push_back(f.place + ": FixtureID " + f.fixtureId + " is used twice; this fixture gets a new id");
+    }
+    if (id == 0) {
+      while (takenIds.count(nextId) || usedIds.count(nextId)) ++nextId;
+      id = nextId++;
+    }
+    usedIds.insert(id);
+    def.id = id;
+    if (!f.address.empty()) {
+      auto patch = parseMvrAddress(f.address);
+      if (!patch.ok()) out.warnings.push_back(f.place + ": " + patch.error().message + "; left unpatched");
+      else if (patch->universe > 0) def.patch = *patch;
+    }
+    // Placement: rotation from the matrix's axes (orthonormalised), position = origin + pivot.
+    const glm::dmat4& w = f.worldMm;
+    glm::dvec3 u(w[0]), v(w[1]);
+    const double su = glm::length(u), sv = glm::length(v), swl = glm::length(glm::dvec3(w[2]));
+    if (!(su > 1e-9) || !(sv > 1e-9)) {
+      out.warnings.push_back(f.place + ": its Matrix has a zero axis; the fixture is placed unrotated");
+      u = {1, 0, 0};
+      v = {0, 1, 0};
+    }
+    if (std::abs(su - 1) > 1e-3 || std::abs(sv - 1) > 1e-3 || std::abs(swl - 1) > 1e-3)
+      out.warnings.push_back(f.place + ": its Matrix scales (axis lengths " + std::to_string(su) + ", " + std::to_string(sv) + ", " +
+                             std::to_string(swl) + "); the scale is dropped, fixtures keep their real size");
+    u = glm::normalize(u);
+    v = glm::normalize(v - u * glm::dot(u, v));
+    glm::dvec3 wz = glm::cross(u, v);
+    if (glm::dot(wz, glm::dvec3(w[2])) < 0)
+      out.warnings.push_back(f.place + ": its Matrix mirrors; imported as the rotation of its first two axes");
+    const glm::dmat3 rot(u, v, wz);
+    def.rotationDeg = mvrRotationToHazeDeg(rot);
+    const glm::dmat3 hazeFromMvr(1, 0, 0, 0, 0, -1, 0, 1, 0);
+    const glm::dmat3 rHaze = hazeFromMvr * rot * glm::transpose(hazeFromMvr);
+    const glm::vec3 posM = mvrPointToHazeM(glm::dvec3(w[3])) + glm::vec3(rHaze * glm::dvec3(g.pivotOffsetM));
+    def.position = glm::vec3(std::round(posM.x * 1e4f) / 1e4f, std::round(posM.y * 1e4f) / 1e4f, std::round(posM.z * 1e4f) / 1e4f);
+    lo = glm::min(lo, def.position);
+    hi = glm::max(hi, def.position);
+    if (!f.focus.empty()) focusOf.emplace_back(show.fixtures.size(), f.focus);
+    show.fixtures.push_back(def);
+  }
+  out.fixtureCount = static_cast<int>(show.fixtures.size());
+
+  // Focus: one cue that aims each fixture at its focus point (pan/tilt within the profile's range).
+  Cue focusCue;
+  focusCue.number = "1";
+  focusCue.label = "Focus from MVR";
+  for (const auto& [index, uuid] : focusOf) {
+    const FixtureDef& def = show.fixtures[index];
+    auto fp = walker.focusPointsMm.find(uuid);
+    if (fp == walker.focusPointsMm.end()) {
+      out.warnings.push_back("fixture " + std::to_string(def.id) + " \"" + def.name + "\": its Focus names no <FocusPoint>; not aimed");
+      continue;
+    }
+    const glm::vec3 dir = mvrPointToHazeM(fp->second) - def.position;
+    if (glm::length(dir) < 1e-3f) continue;
+    auto [pan, tilt] = aimPanTiltDeg(def.rotationDeg, dir);
+    const GdtfEntry* g = nullptr;
+    for (const auto& [spec, e] : gdtfs)
+      if (e.ok && e.profileKey == def.profile) g = &e;
+    if (g != nullptr && (pan < g->panMin || pan > g->panMax || tilt < g->tiltMin || tilt > g->tiltMax)) {
+      // The other solution of the same aim: pan + 180, tilt negated.
+      const float pan2 = pan > 0 ? pan - 180.0f : pan + 180.0f, tilt2 = -tilt;
+      if (pan2 >= g->panMin && pan2 <= g->panMax && tilt2 >= g->tiltMin && tilt2 <= g->tiltMax) {
+        pan = pan2;
+        tilt = tilt2;
+      } else {
+        out.warnings.push_back("fixture " + std::to_string(def.id) + " \"" + def.name + "\": its focus point needs pan " +
+                               std::to_string(pan) + ", tilt " + std::to_string(tilt) + ", outside its profile's range; not aimed");
+        continue;
+      }
+    }
+    CueValues values;
+    values.panDeg = pan;
+    values.tiltDeg = tilt;
+    focusCue.values[def.id] = values;
+  }
+  if (!focusCue.values.empty()) show.cueLists.push_back(CueList{"MVR focus", {focusCue}});
+
+  // A camera that sees the rig: from the audience side (+Z), above, looking at its middle.
+  if (!show.fixtures.empty()) {
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    const float extent = std::max(4.0f, glm::length(hi - lo));
+    CameraDef cam;
+    cam.name = "MVR overview";
+    cam.target = glm::round(centre * 100.0f) / 100.0f;
+    cam.position = glm::round((centre + glm::vec3(0.0f, 0.4f * extent, 1.2f * extent)) * 100.0f) / 100.0f;
+    cam.farM = std::max(100.0f, 4.0f * extent);
+    show.cameras.push_back(cam);
+  }
+
+  if (options.writeVenue && !walker.geometry.empty()) {
+    const std::string venueName = stem + "_venue.gltf";
+    auto venue = writeMvrVenue(*zip, walker.geometry, showDir / venueName, options.maxVenueTriangles, out.warnings);
+    if (!venue.ok()) return venue.error();
+    out.geometryInstances = venue->instances;
+    out.venueTriangles = venue->triangles;
+    if (venue->instances > 0) show.venueGltf = venueName;
+  }
+
+  SaveOptions save;
+  save.force = true;  // existence was checked above; a new show has no stamp to compare
+  save.keepBackup = false;
+  Status s = saveShow(show, showFile, save);
+  if (!s.ok()) return s.error();
+  return out;
+}
+
+}  // namespace haze

@@ -1,0 +1,195 @@
+// Builds the venue glTF of an MVR import: every distinct geometry file becomes one glTF mesh in
+// its own units and axes, and every placement of it a node whose matrix takes it into haze's
+// frame (Y-up metres). Instancing keeps a rig of 2000 truss pieces small on disk.
+#include "shows/mvr_venue.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <memory>
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
+
+#include "fixtures/zip_archive.h"
+#include "shows/show_save.h"
+
+namespace haze {
+
+namespace {
+
+struct MeshData {
+  std::vector<float> positions;  // xyz
+  std::vector<float> normals;    // xyz
+  std::vector<std::uint32_t> indices;
+  bool yUpMetres = false;        // .glb: glTF's own frame
+};
+
+std::string lowerExt(const std::string& name) {
+  const auto dot = name.rfind('.');
+  std::string e = dot == std::string::npos ? "" : name.substr(dot + 1);
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+// One file through assimp, node transforms baked in; an error sentence when it gives nothing.
+std::string loadMesh(const ZipArchive& archive, const std::string& name, std::size_t budgetTriangles, MeshData& out) {
+  const std::string ext = lowerExt(name);
+  if (ext != "3ds" && ext != "glb" && ext != "gltf")
+    return "geometry file \"" + name + "\" is neither .3ds nor .glb; left out";
+  auto bytes = archive.read(name);
+  if (!bytes.ok()) return "geometry file \"" + name + "\" cannot be read (" + bytes.error().message + "); left out";
+  try {
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFileFromMemory(
+        bytes->data(), bytes->size(),
+        aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenNormals | aiProcess_SortByPType,
+        ext.c_str());
+    if (scene == nullptr || scene->mNumMeshes == 0)
+      return "geometry file \"" + name + "\" could not be read by assimp (" + importer.GetErrorString() + "); left out";
+    out.yUpMetres = ext != "3ds";
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+      const aiMesh* mesh = scene->mMeshes[m];
+      if ((mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0 || mesh->mVertices == nullptr) continue;
+      if (out.indices.size() / 3 + mesh->mNumFaces > budgetTriangles)
+        return "geometry file \"" + name + "\" would pass the venue's triangle limit; left out";
+      const auto base = static_cast<std::uint32_t>(out.positions.size() / 3);
+      for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+        const aiVector3D& p = mesh->mVertices[v];
+        out.positions.insert(out.positions.end(), {p.x, p.y, p.z});
+        aiVector3D n = mesh->mNormals != nullptr ? mesh->mNormals[v] : aiVector3D(0, 0, 1);
+        const float len = n.Length();
+        if (!(len > 0.0f) || !std::isfinite(len)) n = aiVector3D(0, 0, 1); else n /= len;
+        out.normals.insert(out.normals.end(), {n.x, n.y, n.z});
+      }
+      for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+        const aiFace& face = mesh->mFaces[f];
+        if (face.mNumIndices != 3) continue;
+        bool inRange = true;
+        for (int k = 0; k < 3; ++k) inRange &= face.mIndices[k] < mesh->mNumVertices;
+        if (!inRange) continue;
+        for (int k = 0; k < 3; ++k) out.indices.push_back(base + face.mIndices[k]);
+      }
+    }
+    for (float f : out.positions)
+      if (!std::isfinite(f)) return "geometry file \"" + name + "\" has non-finite vertices; left out";
+    if (out.indices.empty()) return "geometry file \"" + name + "\" has no triangles; left out";
+  } catch (const std::exception& e) {
+    return "geometry file \"" + name + "\" made assimp fail (" + e.what() + "); left out";
+  }
+  return "";
+}
+
+void appendBytes(std::string& bin, const void* data, std::size_t bytes) {
+  bin.append(static_cast<const char*>(data), bytes);
+  while (bin.size() % 4 != 0) bin.push_back('\0');
+}
+
+}  // namespace
+
+Result<MvrVenueStats> writeMvrVenue(const ZipArchive& archive, const std::vector<MvrGeometryInstance>& instances,
+                                    const std::filesystem::path& gltfFile, std::size_t maxTriangles,
+                                    std::vector<std::string>& warnings) {
+  // MVR world (mm, Z-up) -> haze (m, Y-up): (x, y, z) -> (x, z, -y) / 1000.
+  glm::dmat4 mvrToHaze(0.0);
+  mvrToHaze[0][0] = 1e-3;
+  mvrToHaze[1][2] = -1e-3;
+  mvrToHaze[2][1] = 1e-3;
+  mvrToHaze[3][3] = 1.0;
+  // glTF file (m, Y-up) -> MVR local (mm, Z-up): the inverse map, scaled.
+  glm::dmat4 gltfToMvr(0.0);
+  gltfToMvr[0][0] = 1e3;
+  gltfToMvr[1][2] = 1e3;
+  gltfToMvr[2][1] = -1e3;
+  gltfToMvr[3][3] = 1.0;
+
+  MvrVenueStats stats;
+  std::map<std::string, int> meshIndex;  // file -> glTF mesh, -1 when it failed
+  std::string bin;
+  nlohmann::json accessors = nlohmann::json::array(), views = nlohmann::json::array(),
+                 meshes = nlohmann::json::array(), nodes = nlohmann::json::array();
+  std::size_t stored = 0;
+  auto addView = [&](const void* data, std::size_t bytes, int target) {
+    nlohmann::json v = {{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", bytes}, {"target", target}};
+    appendBytes(bin, data, bytes);
+    views.push_back(v);
+    return static_cast<int>(views.size() - 1);
+  };
+  for (const MvrGeometryInstance& inst : instances) {
+    auto it = meshIndex.find(inst.fileName);
+    if (it == meshIndex.end()) {
+      MeshData mesh;
+      const std::string problem = loadMesh(archive, inst.fileName, maxTriangles - stored, mesh);
+      if (!problem.empty()) {
+        warnings.push_back(inst.place + ": " + problem);
+        it = meshIndex.emplace(inst.fileName, -1).first;
+      } else {
+        stored += mesh.indices.size() / 3;
+        glm::vec3 lo(1e30f), hi(-1e30f);
+        for (std::size_t i = 0; i < mesh.positions.size(); i += 3)
+          for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], mesh.positions[i + static_cast<std::size_t>(k)]);
+            hi[k] = std::max(hi[k], mesh.positions[i + static_cast<std::size_t>(k)]);
+          }
+        const std::size_t nVerts = mesh.positions.size() / 3;
+        const int pv = addView(mesh.positions.data(), mesh.positions.size() * sizeof(float), 34962);
+        const int nv = addView(mesh.normals.data(), mesh.normals.size() * sizeof(float), 34962);
+        const int iv = addView(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t), 34963);
+        accessors.push_back({{"bufferView", pv}, {"componentType", 5126}, {"count", nVerts}, {"type", "VEC3"},
+                             {"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}});
+        accessors.push_back({{"bufferView", nv}, {"componentType", 5126}, {"count", nVerts}, {"type", "VEC3"}});
+        accessors.push_back({{"bufferView", iv}, {"componentType", 5125}, {"count", mesh.indices.size()}, {"type", "SCALAR"}});
+        const int a0 = static_cast<int>(accessors.size()) - 3;
+        meshes.push_back({{"name", inst.fileName},
+                          {"primitives", {{{"attributes", {{"POSITION", a0}, {"NORMAL", a0 + 1}}},
+                                           {"indices", a0 + 2}, {"material", 0}, {"mode", 4}}}}});
+        it = meshIndex.emplace(inst.fileName, static_cast<int>(meshes.size() - 1)).first;
+        ++stats.meshes;
+        if (mesh.yUpMetres) meshes.back()["extras"] = {{"mvr_units", "m, Y-up"}};
+        else meshes.back()["extras"] = {{"mvr_units", "mm, Z-up"}};
+        stats.triangles += mesh.indices.size() / 3;
+      }
+    }
+    if (it->second < 0) continue;
+    const bool yUp = lowerExt(inst.fileName) != "3ds";
+    const glm::dmat4 m = mvrToHaze * inst.worldMm * (yUp ? gltfToMvr : glm::dmat4(1.0));
+    nlohmann::json matrix = nlohmann::json::array();
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) matrix.push_back(static_cast<double>(static_cast<float>(m[c][r])));
+    nodes.push_back({{"name", inst.place}, {"mesh", it->second}, {"matrix", matrix}});
+    ++stats.instances;
+  }
+
+  const std::string binName = gltfFile.stem().string() + ".bin";
+  nlohmann::json sceneNodes = nlohmann::json::array();
+  for (std::size_t i = 0; i < nodes.size(); ++i) sceneNodes.push_back(i);
+  nlohmann::json gltf = {
+      {"asset", {{"version", "2.0"}, {"generator", "haze import-mvr"}}},
+      {"scene", 0},
+      {"scenes", {{{"name", "MVR venue"}, {"nodes", sceneNodes}}}},
+      {"nodes", nodes},
+      {"materials", {{{"name", "MVR geometry"},
+                      {"pbrMetallicRoughness", {{"baseColorFactor", {0.6, 0.6, 0.6, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.9}}},
+                      {"doubleSided", true}}}},
+  };
+  if (!meshes.empty()) {
+    gltf["meshes"] = meshes;
+    gltf["accessors"] = accessors;
+    gltf["bufferViews"] = views;
+    gltf["buffers"] = {{{"uri", binName}, {"byteLength", bin.size()}}};
+  }
+  if (nodes.empty()) gltf["scenes"][0].erase("nodes");
+  if (!meshes.empty()) {
+    Status s = writeFileAtomically(gltfFile.parent_path() / binName, bin, false);
+    if (!s.ok()) return s.error();
+  }
+  Status s = writeFileAtomically(gltfFile, gltf.dump(1), false);
+  if (!s.ok()) return s.error();
+  return stats;
+}
+
+}  // namespace haze

@@ -1,0 +1,343 @@
+// MVR import of the shared MVR scenes and of broken MVRs built here. The expected fixture
+// counts, patch and positions are read from GeneralSceneDescription.xml by this test itself
+// (pugixml, its own matrix composition and its own mm -> m, Z-up -> Y-up conversion), not by
+// the importer's code.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/gtx/euler_angles.hpp>
+#include <nlohmann/json.hpp>
+#include <pugixml.hpp>
+
+#include "fixtures/gdtf.h"
+#include "fixtures/zip_archive.h"
+#include "shows/mvr_import.h"
+#include "shows/show.h"
+#include "shows/show_validate.h"
+#include "unit/gdtf/zip_builder.h"
+
+namespace haze {
+namespace {
+
+const std::filesystem::path kMvrDir = std::filesystem::path(HAZE_SHARED_DATA) / "gdtf" / "mvr";
+
+// --- the test's own reading of the XML ---------------------------------------------------
+
+struct Affine {  // rows of a 3x4 matrix: p' = A p + t, millimetres
+  double a[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  double t[3] = {0, 0, 0};
+};
+
+Affine parseAffine(const std::string& s) {
+  Affine m;
+  double v[12] = {};
+  const int n = std::sscanf(s.c_str(), " {%lf,%lf,%lf}{%lf,%lf,%lf}{%lf,%lf,%lf}{%lf,%lf,%lf}", &v[0], &v[1], &v[2], &v[3],
+                            &v[4], &v[5], &v[6], &v[7], &v[8], &v[9], &v[10], &v[11]);
+  EXPECT_EQ(n, 12) << s;
+  for (int axis = 0; axis < 3; ++axis)  // {u}{v}{w}: the local axes, i.e. the columns
+    for (int row = 0; row < 3; ++row) m.a[row][axis] = v[axis * 3 + row];
+  for (int row = 0; row < 3; ++row) m.t[row] = v[9 + row];
+  return m;
+}
+
+Affine compose(const Affine& p, const Affine& c) {
+  Affine r;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      r.a[i][j] = 0;
+      for (int k = 0; k < 3; ++k) r.a[i][j] += p.a[i][k] * c.a[k][j];
+    }
+    r.t[i] = p.t[i];
+    for (int k = 0; k < 3; ++k) r.t[i] += p.a[i][k] * c.t[k];
+  }
+  return r;
+}
+
+struct XmlFixture {
+  std::string name, spec, fixtureId, address;
+  Affine world;
+};
+
+std::vector<XmlFixture> readFixtures(const pugi::xml_node& list, const Affine& parent) {
+  std::vector<XmlFixture> out;
+  for (pugi::xml_node n : list.children()) {
+    Affine world = parent;
+    if (pugi::xml_node m = n.child("Matrix")) world = compose(parent, parseAffine(m.text().as_string()));
+    if (std::string(n.name()) == "Fixture") {
+      XmlFixture f{n.attribute("name").value(), n.child("GDTFSpec").text().as_string(),
+                   n.child("FixtureID").text().as_string(), n.child("Addresses").child("Address").text().as_string(), world};
+      out.push_back(f);
+    }
+    auto sub = readFixtures(n.child("ChildList"), world);
+    out.insert(out.end(), sub.begin(), sub.end());
+  }
+  return out;
+}
+
+std::string readXml(const std::string& mvr) {
+  auto zip = ZipArchive::open(kMvrDir / mvr);
+  EXPECT_TRUE(zip.ok());
+  auto bytes = zip->read("GeneralSceneDescription.xml");
+  EXPECT_TRUE(bytes.ok());
+  return std::string(bytes->begin(), bytes->end());
+}
+
+// haze metres from MVR millimetres, written out here: (x, y, z) -> (x, z, -y) / 1000.
+glm::dvec3 toHaze(const double p[3]) { return glm::dvec3(p[0], p[2], -p[1]) / 1000.0; }
+
+struct Imported {
+  test::TempDir dir{"mvr"};
+  std::filesystem::path show;
+  Result<MvrImport> result = Error{};
+  explicit Imported(const std::string& mvr, const std::string& showName = "rig.haze.json") {
+    show = dir / showName;
+    result = importMvr(kMvrDir / mvr, show);
+  }
+};
+
+void checkAgainstXml(const std::string& mvr, std::size_t expectedFixtures) {
+  Imported imp(mvr);
+  ASSERT_TRUE(imp.result.ok()) << imp.result.error().str();
+  const std::string xml = readXml(mvr);
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_string(xml.c_str()));
+  std::vector<XmlFixture> fromXml;
+  for (pugi::xml_node layer : doc.child("GeneralSceneDescription").child("Scene").child("Layers").children("Layer")) {
+    Affine world;
+    if (pugi::xml_node m = layer.child("Matrix")) world = parseAffine(m.text().as_string());
+    auto sub = readFixtures(layer.child("ChildList"), world);
+    fromXml.insert(fromXml.end(), sub.begin(), sub.end());
+  }
+  ASSERT_EQ(fromXml.size(), expectedFixtures);
+  const Show& show = imp.result->show;
+  ASSERT_EQ(show.fixtures.size(), fromXml.size());
+  EXPECT_EQ(imp.result->fixtureCount, static_cast<int>(fromXml.size()));
+
+  std::map<std::string, glm::vec3> pivots;  // profile -> pivot offset, from the extracted GDTF
+  for (std::size_t i = 0; i < fromXml.size(); ++i) {
+    const XmlFixture& x = fromXml[i];
+    const FixtureDef& f = show.fixtures[i];
+    SCOPED_TRACE(mvr + " fixture " + std::to_string(i) + " \"" + x.name + "\"");
+    EXPECT_EQ(f.name, x.name);
+    // Patch: absolute 1-based addresses, 0 = unpatched.
+    const long abs = std::strtol(x.address.c_str(), nullptr, 10);
+    if (abs == 0) {
+      EXPECT_FALSE(f.patch.has_value());
+    } else {
+      ASSERT_TRUE(f.patch.has_value());
+      EXPECT_EQ(f.patch->universe, (abs - 1) / 512 + 1);
+      EXPECT_EQ(f.patch->address, (abs - 1) % 512 + 1);
+    }
+    const long id = std::strtol(x.fixtureId.c_str(), nullptr, 10);
+    if (id > 0) EXPECT_EQ(f.id, id);
+    // Rotation: the beam (GDTF -Z, i.e. minus the matrix's third column) in haze axes.
+    double w[3] = {x.world.a[0][2], x.world.a[1][2], x.world.a[2][2]};
+    const double wl = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    const glm::dvec3 beamExpected = -toHaze(w) * 1000.0 / wl;
+    const glm::mat3 r = glm::mat3(glm::eulerAngleZYX(glm::radians(f.rotationDeg.z), glm::radians(f.rotationDeg.y),
+                                                     glm::radians(f.rotationDeg.x)));
+    const glm::dvec3 beam(r * glm::vec3(0, -1, 0));
+    EXPECT_LT(glm::length(beam - beamExpected), 1e-3) << f.rotationDeg.x << " " << f.rotationDeg.y << " " << f.rotationDeg.z;
+    // Position: the MVR origin in haze metres plus the GDTF pivot offset turned with the fixture.
+    if (!pivots.count(f.profile)) {
+      auto g = loadGdtf(show.resolve(show.profiles.at(f.profile).path));
+      ASSERT_TRUE(g.ok()) << g.error().str();
+      pivots[f.profile] = g->pivotOffsetM;
+    }
+    const glm::dvec3 expected = toHaze(x.world.t) + glm::dvec3(r * pivots[f.profile]);
+    EXPECT_LT(glm::length(glm::dvec3(f.position) - expected), 2e-4)
+        << "got " << f.position.x << " " << f.position.y << " " << f.position.z << ", expected " << expected.x << " "
+        << expected.y << " " << expected.z;
+  }
+
+  // The written show loads and validates, with its profiles from the extracted GDTF files.
+  auto loaded = loadShow(imp.show);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().str();
+  EXPECT_EQ(loaded->fixtures.size(), fromXml.size());
+  for (const Error& e : validateShowFile(imp.show)) ADD_FAILURE() << e.str();
+}
+
+TEST(MvrImport, BasicFixture) {
+  checkAgainstXml("basic_fixture.mvr", 1);
+  Imported imp("basic_fixture.mvr");
+  ASSERT_TRUE(imp.result.ok());
+  const FixtureDef& f = imp.result->show.fixtures.at(0);
+  // Matrix origin (5000, 5000, 5000) mm, identity rotation: haze (5, 5, -5) plus the pivot.
+  EXPECT_EQ(f.rotationDeg, glm::vec3(0.0f));
+  EXPECT_FALSE(f.patch.has_value());  // Address 0
+  EXPECT_EQ(f.id, 1);                 // FixtureID 0 is no id: the first free one
+  EXPECT_TRUE(std::filesystem::exists(imp.dir / "rig_gdtf" / "LED PAR 64 RGBW.gdtf"));
+  EXPECT_TRUE(imp.result->show.venueGltf.empty());  // no geometry in this scene
+  // Unused MVR fields are warned with their XML place.
+  bool castShadowWarned = false;
+  for (const auto& w : imp.result->warnings)
+    castShadowWarned |= w.find("GeneralSceneDescription.xml line 31 <CastShadow>") != std::string::npos;
+  EXPECT_TRUE(castShadowWarned);
+}
+
+TEST(MvrImport, SceneObjectsTheatre) {
+  checkAgainstXml("scene_objects.mvr", 72);
+  Imported imp("scene_objects.mvr");
+  ASSERT_TRUE(imp.result.ok());
+  // 100 Geometry3D .glb files placed in the venue; every fixture has a focus point below it.
+  EXPECT_EQ(imp.result->geometryInstances, 100);
+  ASSERT_EQ(imp.result->show.venueGltf, "rig_venue.gltf");
+  std::ifstream in(imp.dir / "rig_venue.gltf");
+  const auto gltf = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_FALSE(gltf.is_discarded());
+  EXPECT_EQ(gltf["nodes"].size(), 100u);
+  EXPECT_TRUE(std::filesystem::exists(imp.dir / "rig_venue.bin"));
+  ASSERT_EQ(imp.result->show.cueLists.size(), 1u);
+  const Cue& focus = imp.result->show.cueLists[0].cues.at(0);
+  EXPECT_EQ(focus.values.size(), 72u);
+  // Pendants hang straight down over their focus points (same x, y in the XML): tilt 0.
+  for (const auto& [id, v] : focus.values) EXPECT_NEAR(*v.tiltDeg, 0.0f, 0.05f) << id;
+}
+
+TEST(MvrImport, CaptureDemoShow) {
+  checkAgainstXml("capture_demo_show.mvr", 76);
+  Imported imp("capture_demo_show.mvr");
+  ASSERT_TRUE(imp.result.ok());
+  // Trusses (13 Symbols of a symdef with one .3ds) and scene objects become venue geometry.
+  EXPECT_GT(imp.result->geometryInstances, 2000);
+  EXPECT_GT(imp.result->venueTriangles, 1000u);
+}
+
+// A 2.5 m truss piece (capture_demo_show's symdef "DT34/3-250", a .3ds in mm) comes out 2.5 m
+// long in the venue: the .3ds unit and the node matrices' scale are right.
+TEST(MvrImport, TrussSymbolIsTwoAndAHalfMetresLong) {
+  Imported imp("capture_demo_show.mvr");
+  ASSERT_TRUE(imp.result.ok());
+  std::ifstream in(imp.dir / "rig_venue.gltf");
+  const auto gltf = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_FALSE(gltf.is_discarded());
+  bool found = false;
+  for (const auto& mesh : gltf["meshes"]) {
+    if (mesh["name"] != "0x27B6408E.3ds") continue;
+    const auto& acc = gltf["accessors"][mesh["primitives"][0]["attributes"]["POSITION"].get<int>()];
+    double longest = 0;
+    for (int k = 0; k < 3; ++k) longest = std::max(longest, acc["max"][k].get<double>() - acc["min"][k].get<double>());
+    EXPECT_NEAR(longest, 2500.0, 60.0);  // mm in the mesh; the node matrix scales by 1/1000
+    found = true;
+  }
+  EXPECT_TRUE(found);
+}
+
+// --- broken MVRs ---------------------------------------------------------------------------
+
+std::string gdtfBytes() {
+  auto zip = ZipArchive::open(kMvrDir / "basic_fixture.mvr");
+  EXPECT_TRUE(zip.ok());
+  auto bytes = zip->read("LED PAR 64 RGBW.gdtf");
+  EXPECT_TRUE(bytes.ok());
+  return std::string(bytes->begin(), bytes->end());
+}
+
+std::string sceneXml(const std::string& children, const std::string& aux = "") {
+  return "<?xml version=\"1.0\"?>\n<GeneralSceneDescription verMajor=\"1\" verMinor=\"5\">\n<Scene>\n<AUXData>" + aux +
+         "</AUXData>\n<Layers>\n<Layer name=\"L\" uuid=\"1\">\n<ChildList>\n" + children +
+         "</ChildList>\n</Layer>\n</Layers>\n</Scene>\n</GeneralSceneDescription>\n";
+}
+
+std::string fixtureXml(const std::string& name, const std::string& spec, const std::string& address,
+                       const std::string& matrix = "{1,0,0}{0,1,0}{0,0,1}{0,0,6000}", const std::string& id = "") {
+  return "<Fixture name=\"" + name + "\" uuid=\"u-" + name + "\">\n<Matrix>" + matrix + "</Matrix>\n<GDTFSpec>" + spec +
+         "</GDTFSpec>\n<GDTFMode>Default</GDTFMode>\n<FixtureID>" + id + "</FixtureID>\n<Addresses><Address break=\"0\">" +
+         address + "</Address></Addresses>\n</Fixture>\n";
+}
+
+struct Built {
+  test::TempDir dir{"mvrbad"};
+  Result<MvrImport> result = Error{};
+  Built(const std::vector<test::ZipItem>& items, bool isZip = true) {
+    const auto file = dir / "in.mvr";
+    if (isZip) EXPECT_TRUE(test::writeZip(file, items));
+    else test::writeFile(file, items.at(0).data);
+    result = importMvr(file, dir / "out.haze.json");
+  }
+  bool warned(const std::string& part) const {
+    for (const auto& w : result->warnings)
+      if (w.find(part) != std::string::npos) return true;
+    return false;
+  }
+};
+
+TEST(MvrBroken, NotAZip) {
+  Built b({{"x", "this is not a zip file at all"}}, false);
+  ASSERT_FALSE(b.result.ok());
+  EXPECT_NE(b.result.error().str().find("in.mvr"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(b.dir / "out.haze.json"));
+}
+
+TEST(MvrBroken, NoSceneDescription) {
+  Built b({{"other.xml", "<a/>"}});
+  ASSERT_FALSE(b.result.ok());
+  EXPECT_NE(b.result.error().message.find("GeneralSceneDescription.xml"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(b.dir / "out.haze.json"));
+}
+
+TEST(MvrBroken, MalformedXmlNamesTheLine) {
+  Built b({{"GeneralSceneDescription.xml", "<?xml version=\"1.0\"?>\n<GeneralSceneDescription>\n<Scene>\n<Layers></Scene>"}});
+  ASSERT_FALSE(b.result.ok());
+  EXPECT_NE(b.result.error().place.find("line 4"), std::string::npos) << b.result.error().str();
+}
+
+TEST(MvrBroken, NotASceneDescription) {
+  Built b({{"GeneralSceneDescription.xml", "<?xml version=\"1.0\"?>\n<Something/>"}});
+  ASSERT_FALSE(b.result.ok());
+  EXPECT_NE(b.result.error().message.find("GeneralSceneDescription"), std::string::npos);
+}
+
+TEST(MvrBroken, MissingGdtfIsWarnedAndTheRestImports) {
+  const std::string xml = sceneXml(fixtureXml("A", "Missing@Fixture.gdtf", "1") + fixtureXml("B", "par.gdtf", "1025", "{1,0,0}{0,1,0}{0,0,1}{1000,2000,3000}", "7"));
+  Built b({{"GeneralSceneDescription.xml", xml}, {"par.gdtf", gdtfBytes()}});
+  ASSERT_TRUE(b.result.ok()) << b.result.error().str();
+  EXPECT_TRUE(b.warned("line 8 <Fixture name=\"A\">: GDTFSpec \"Missing@Fixture.gdtf\" is not in the archive"));
+  ASSERT_EQ(b.result->show.fixtures.size(), 1u);
+  const FixtureDef& f = b.result->show.fixtures[0];
+  EXPECT_EQ(f.id, 7);
+  ASSERT_TRUE(f.patch.has_value());
+  EXPECT_EQ(f.patch->universe, 3);
+  EXPECT_EQ(f.patch->address, 1);
+  auto g = loadGdtf(b.dir / "out_gdtf" / "par.gdtf");
+  ASSERT_TRUE(g.ok());
+  const glm::vec3 expected = glm::vec3(1.0f, 3.0f, -2.0f) + g->pivotOffsetM;
+  EXPECT_LT(glm::length(f.position - expected), 1e-4f);
+  for (const Error& e : validateShowFile(b.dir / "out.haze.json")) ADD_FAILURE() << e.str();
+}
+
+TEST(MvrBroken, BadFieldsAreWarnedNotFatal) {
+  const std::string xml = sceneXml(fixtureXml("A", "par", "banana", "{1,0,0}{0,1,0}{oops}{0,0,0}") +
+                                   "<Mystery name=\"m\"/>\n<SceneObject name=\"S\" uuid=\"s\"><Geometries><Geometry3D fileName=\"absent.3ds\"/>"
+                                   "<Symbol uuid=\"y\" symdef=\"loop\"/></Geometries></SceneObject>\n",
+                                   "<Symdef uuid=\"loop\" name=\"loop\"><ChildList><Symbol uuid=\"z\" symdef=\"loop\"/></ChildList></Symdef>");
+  Built b({{"GeneralSceneDescription.xml", xml}, {"par.gdtf", gdtfBytes()}});
+  ASSERT_TRUE(b.result.ok()) << b.result.error().str();
+  EXPECT_TRUE(b.warned("<Matrix>: Matrix"));
+  EXPECT_TRUE(b.warned("Address \"banana\""));
+  EXPECT_TRUE(b.warned("<Mystery name=\"m\">: unknown scene element"));
+  EXPECT_TRUE(b.warned("absent.3ds"));
+  EXPECT_TRUE(b.warned("symbols nested deeper"));  // a symdef that uses itself ends, warned
+  ASSERT_EQ(b.result->show.fixtures.size(), 1u);
+  EXPECT_FALSE(b.result->show.fixtures[0].patch.has_value());
+}
+
+TEST(MvrBroken, RefusesToOverwriteAnExistingShow) {
+  test::TempDir dir("mvrexists");
+  test::writeFile(dir / "s.haze.json", "{}");
+  auto r = importMvr(kMvrDir / "basic_fixture.mvr", dir / "s.haze.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().message.find("already exists"), std::string::npos);
+  EXPECT_EQ(test::readFile(dir / "s.haze.json"), "{}");
+  MvrImportOptions force;
+  force.force = true;
+  EXPECT_TRUE(importMvr(kMvrDir / "basic_fixture.mvr", dir / "s.haze.json", force).ok());
+}
+
+}  // namespace
+}  // namespace haze
