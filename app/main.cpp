@@ -19,7 +19,7 @@ constexpr const char* kHelp =
     "  haze validate SHOW\n"
     "  haze fixture info FILE --json        native profile, .ies, .ldt or .gdtf\n"
     "  haze bench [--fixtures N] [--width W --height H] [--quality Q] --json\n"
-    "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S]\n"
+    "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S] [--state-json OUT] [--render OUT.png]\n"
     "Each subcommand takes --help.\n";
 
 }  // namespace
@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   if (cmd == "validate") return haze::runValidate(rest);
   if (cmd == "fixture") return haze::runFixture(rest);
   if (cmd == "bench") return haze::runBench(rest);
+  if (cmd == "live") return haze::runLive(rest);
   if (cmd == "open") return haze::runGui(rest);
   if (cmd == "--help" || cmd == "-h" || cmd == "help") {
     std::fputs(kHelp, stdout);

@@ -7,8 +7,10 @@
 // the reachable direction with the smallest angle to the point.
 #include "shows/focus.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -53,6 +55,12 @@ void miss(const glm::dvec3& lensOffset, const glm::dvec3& q, double panDeg, doub
   double len = glm::length(d);
   missM = along > 0.0 ? glm::length(d - along * a.beam) : len;
   angleRad = len > 0.0 ? std::acos(std::clamp(along / len, -1.0, 1.0)) : 0.0;
+}
+
+std::string deg(float v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
 }
 
 bool inRange(const Range& r, double v) { return v >= r.min - kRangeSlackDeg && v <= r.max + kRangeSlackDeg; }
@@ -103,12 +111,18 @@ void nearestReachable(const FocusRequest& r, const glm::dvec3& L, const glm::dve
     double span = std::max(0.0, static_cast<double>(range.max) - range.min);
     return std::min(720, static_cast<int>(std::ceil(span / 2.0))) ;
   };
-  int np = steps(r.panDeg), nt = steps(r.tiltDeg);
+  // The current pan and tilt join the grid so that ties (a point straight above a fixture that
+  // cannot tilt that far) keep the head where it is.
+  auto values = [&](const Range& range, double current) {
+    int n = steps(range);
+    std::vector<double> v;
+    for (int i = 0; i <= n; ++i) v.push_back(n == 0 ? range.min : range.min + (range.max - range.min) * i / n);
+    v.push_back(clampTo(range, current));
+    return v;
+  };
   double best = std::numeric_limits<double>::infinity(), bestDist = best;
-  for (int i = 0; i <= np; ++i)
-    for (int j = 0; j <= nt; ++j) {
-      double p = np == 0 ? r.panDeg.min : r.panDeg.min + (r.panDeg.max - r.panDeg.min) * i / np;
-      double t = nt == 0 ? r.tiltDeg.min : r.tiltDeg.min + (r.tiltDeg.max - r.tiltDeg.min) * j / nt;
+  for (double p : values(r.panDeg, r.currentPanDeg))
+    for (double t : values(r.tiltDeg, r.currentTiltDeg)) {
       double e = err(p, t), d = distance2(p, t, r);
       if (e < best - 1e-9 || (e <= best + 1e-9 && d < bestDist)) {
         best = std::min(best, e);
@@ -173,9 +187,9 @@ FocusResult focusOnPoint(const FocusRequest& r, const glm::vec3& pointM) {
     if (glm::length(q) < 1e-6)
       out.note = "the point is at the fixture itself; there is no direction to aim at";
     else if (anyExact)
-      out.note = "the point needs pan/tilt outside the fixture's ranges (pan " + std::to_string(r.panDeg.min) + ".." +
-                 std::to_string(r.panDeg.max) + ", tilt " + std::to_string(r.tiltDeg.min) + ".." +
-                 std::to_string(r.tiltDeg.max) + "); aimed as near as the ranges allow";
+      out.note = "the point needs pan/tilt outside the fixture's ranges (pan " + deg(r.panDeg.min) + ".." +
+                 deg(r.panDeg.max) + ", tilt " + deg(r.tiltDeg.min) + ".." +
+                 deg(r.tiltDeg.max) + "); aimed as near as the ranges allow";
     else
       out.note = "no pan/tilt puts the beam axis through the point (it is too close to the fixture for its lens "
                  "offset); aimed as near as possible";

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `haze fixture info FILE --json` on a native profile, an IES and an LDT file: the facts are
+# `haze fixture info FILE --json` on a native profile, an IES, an LDT and a GDTF file: the facts are
 # JSON with the documented keys and the values the files imply; a bad file is one stderr line
 # and exit 1. Also validates the native profile against schemas/fixture.schema.json.
 # Usage: bash fixture_info.sh <haze-binary> <repo-root>
@@ -65,6 +65,10 @@ check "$data/photometry/ies/hydraapi/ies_34.ies" "$keys" \
 check "$data/photometry/ldt/eulumdat-py/sample3.ldt" "$keys" \
   "f.manufacturer === 'Regent'" "f.symmetry === 'none'" "f.grid.gamma === 37 && f.grid.c === 24" \
   "Math.abs(f.lumens - 12800) < 128"
+
+# GDTF goes through the same loadProfile (fixtures/gdtf.h): facts come out with the same keys.
+check "$data/gdtf/BlenderDMX@BeskydBeam@version10.gdtf" "$keys" \
+  "f.name === 'BeskydBeam'" "f.manufacturer === 'BlenderDMX'" "f.peak_candela > 0 && f.lumens > 0"
 
 # Bad input: one line on stderr naming the file and the line, exit status 1, nothing on stdout.
 printf 'IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 3 1 2 2 0 0 0\n1 1 0\n0 45 90\n0\n10 5 0\n' > "$tmp/typeb.ies"

@@ -134,7 +134,9 @@ void checkAgainstXml(const std::string& mvr, std::size_t expectedFixtures) {
       EXPECT_EQ(f.patch->address, (abs - 1) % 512 + 1);
     }
     const long id = std::strtol(x.fixtureId.c_str(), nullptr, 10);
-    if (id > 0) EXPECT_EQ(f.id, id);
+    if (id > 0) {
+      EXPECT_EQ(f.id, id);
+    }
     // Rotation: the beam (GDTF -Z, i.e. minus the matrix's third column) in haze axes.
     double w[3] = {x.world.a[0][2], x.world.a[1][2], x.world.a[2][2]};
     const double wl = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
@@ -254,7 +256,7 @@ std::string fixtureXml(const std::string& name, const std::string& spec, const s
 struct Built {
   test::TempDir dir{"mvrbad"};
   Result<MvrImport> result = Error{};
-  Built(const std::vector<test::ZipItem>& items, bool isZip = true) {
+  Built(bool isZip, const std::vector<test::ZipItem>& items) {
     const auto file = dir / "in.mvr";
     if (isZip) EXPECT_TRUE(test::writeZip(file, items));
     else test::writeFile(file, items.at(0).data);
@@ -268,34 +270,34 @@ struct Built {
 };
 
 TEST(MvrBroken, NotAZip) {
-  Built b({{"x", "this is not a zip file at all"}}, false);
+  Built b(false, {{"x", "this is not a zip file at all"}});
   ASSERT_FALSE(b.result.ok());
   EXPECT_NE(b.result.error().str().find("in.mvr"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(b.dir / "out.haze.json"));
 }
 
 TEST(MvrBroken, NoSceneDescription) {
-  Built b({{"other.xml", "<a/>"}});
+  Built b(true, {{"other.xml", "<a/>"}});
   ASSERT_FALSE(b.result.ok());
   EXPECT_NE(b.result.error().message.find("GeneralSceneDescription.xml"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(b.dir / "out.haze.json"));
 }
 
 TEST(MvrBroken, MalformedXmlNamesTheLine) {
-  Built b({{"GeneralSceneDescription.xml", "<?xml version=\"1.0\"?>\n<GeneralSceneDescription>\n<Scene>\n<Layers></Scene>"}});
+  Built b(true, {{"GeneralSceneDescription.xml", "<?xml version=\"1.0\"?>\n<GeneralSceneDescription>\n<Scene>\n<Layers></Scene>"}});
   ASSERT_FALSE(b.result.ok());
   EXPECT_NE(b.result.error().place.find("line 4"), std::string::npos) << b.result.error().str();
 }
 
 TEST(MvrBroken, NotASceneDescription) {
-  Built b({{"GeneralSceneDescription.xml", "<?xml version=\"1.0\"?>\n<Something/>"}});
+  Built b(true, {{"GeneralSceneDescription.xml", "<?xml version=\"1.0\"?>\n<Something/>"}});
   ASSERT_FALSE(b.result.ok());
   EXPECT_NE(b.result.error().message.find("GeneralSceneDescription"), std::string::npos);
 }
 
 TEST(MvrBroken, MissingGdtfIsWarnedAndTheRestImports) {
   const std::string xml = sceneXml(fixtureXml("A", "Missing@Fixture.gdtf", "1") + fixtureXml("B", "par.gdtf", "1025", "{1,0,0}{0,1,0}{0,0,1}{1000,2000,3000}", "7"));
-  Built b({{"GeneralSceneDescription.xml", xml}, {"par.gdtf", gdtfBytes()}});
+  Built b(true, {{"GeneralSceneDescription.xml", xml}, {"par.gdtf", gdtfBytes()}});
   ASSERT_TRUE(b.result.ok()) << b.result.error().str();
   EXPECT_TRUE(b.warned("line 8 <Fixture name=\"A\">: GDTFSpec \"Missing@Fixture.gdtf\" is not in the archive"));
   ASSERT_EQ(b.result->show.fixtures.size(), 1u);
@@ -316,7 +318,7 @@ TEST(MvrBroken, BadFieldsAreWarnedNotFatal) {
                                    "<Mystery name=\"m\"/>\n<SceneObject name=\"S\" uuid=\"s\"><Geometries><Geometry3D fileName=\"absent.3ds\"/>"
                                    "<Symbol uuid=\"y\" symdef=\"loop\"/></Geometries></SceneObject>\n",
                                    "<Symdef uuid=\"loop\" name=\"loop\"><ChildList><Symbol uuid=\"z\" symdef=\"loop\"/></ChildList></Symdef>");
-  Built b({{"GeneralSceneDescription.xml", xml}, {"par.gdtf", gdtfBytes()}});
+  Built b(true, {{"GeneralSceneDescription.xml", xml}, {"par.gdtf", gdtfBytes()}});
   ASSERT_TRUE(b.result.ok()) << b.result.error().str();
   EXPECT_TRUE(b.warned("<Matrix>: Matrix"));
   EXPECT_TRUE(b.warned("Address \"banana\""));
