@@ -40,7 +40,11 @@ Result<Quality> parseQuality(const std::string& name) {
 Result<std::unique_ptr<RenderSession>> RenderSession::open(const Show& show, const RenderJobOptions& options) {
   auto session = std::unique_ptr<RenderSession>(new RenderSession());
   session->options_ = options;
+#ifdef NDEBUG
   const bool debug = std::getenv("HAZE_GL_DEBUG") != nullptr;
+#else
+  const bool debug = true;  // debug builds always report GL errors (KHR_debug)
+#endif
   auto context = createHeadlessContext({.debug = debug});
   if (!context) return context.error();
   session->context_ = std::move(*context);

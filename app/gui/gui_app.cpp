@@ -18,6 +18,7 @@
 
 #include "app/commands.h"
 #include "app/frame_builder.h"
+#include "app/render_session.h"
 #include "app/window_context.h"
 #include "renderer/gl/gl.h"
 #include "renderer/renderer.h"
@@ -100,8 +101,12 @@ int runGui(const Args& args) {
   auto venue = loadVenue(show->resolve(show->venueGltf));
   if (!venue) return fail(venue.error().str());
 
-  auto ctx = WindowContext::create(opt.width, opt.height, "haze - " + show->file.filename().string(),
-                                   std::getenv("HAZE_GL_DEBUG") != nullptr);
+#ifdef NDEBUG
+  const bool debugGl = std::getenv("HAZE_GL_DEBUG") != nullptr;
+#else
+  const bool debugGl = true;  // debug builds always report GL errors (KHR_debug)
+#endif
+  auto ctx = WindowContext::create(opt.width, opt.height, "haze - " + show->file.filename().string(), debugGl);
   if (!ctx) return fail(ctx.error().str());
   GLFWwindow* window = (*ctx)->window();
 
@@ -112,8 +117,13 @@ int runGui(const Args& args) {
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 450");
 
-  std::unique_ptr<Renderer> renderer;
+  // Two renderers on one window: draft while anything moves (a drag, a fade), so the view keeps
+  // up; default when still, refining progressively (more jittered frames each redraw).
+  std::unique_ptr<Renderer> draft, still;
   int rendererW = 0, rendererH = 0;
+  int stillFrames = 0;
+  Orbit lastOrbit{};
+  float lastScattering = -1.0f;
   const CueList* list = show->findCueList("");
   size_t cue = 0;
   auto goTime = std::chrono::steady_clock::now();
@@ -128,15 +138,16 @@ int runGui(const Args& args) {
     int fbW = 0, fbH = 0;
     glfwGetFramebufferSize(window, &fbW, &fbH);
     if (fbW <= 0 || fbH <= 0) continue;
-    if (!renderer || fbW != rendererW || fbH != rendererH) {
-      RenderSettings rs;
-      rs.width = fbW;
-      rs.height = fbH;
-      auto r = Renderer::create(*venue, rs);
-      if (!r) { exitCode = fail(r.error().str()); break; }
-      renderer = std::move(*r);
+    if (!still || fbW != rendererW || fbH != rendererH) {
+      auto d = Renderer::create(*venue, renderSettingsFor(Quality::Draft, fbW, fbH));
+      if (!d) { exitCode = fail(d.error().str()); break; }
+      auto s = Renderer::create(*venue, renderSettingsFor(Quality::Default, fbW, fbH));
+      if (!s) { exitCode = fail(s.error().str()); break; }
+      draft = std::move(*d);
+      still = std::move(*s);
       rendererW = fbW;
       rendererH = fbH;
+      stillFrames = 0;
     }
 
     ImGui_ImplOpenGL3_NewFrame();
@@ -164,7 +175,8 @@ int runGui(const Args& args) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(300, 360), ImGuiCond_FirstUseEver);
     ImGui::Begin("Playback");
-    ImGui::Text("%.1f ms per frame", frameMs);
+    ImGui::Text("%.1f ms per frame, %s", frameMs, stillFrames > 0 ? "refining" : "draft");
+    if (stillFrames > 0) ImGui::Text("%d frames accumulated", stillFrames);
     if (hasList) {
       ImGui::Text("List: %s", list->name.c_str());
       if (ImGui::Button("GO") && cue + 1 < list->cues.size()) go(cue + 1);
@@ -189,8 +201,23 @@ int runGui(const Args& args) {
     if (!frameState) { exitCode = fail(frameState.error().str()); break; }
     frameState->camera.position = orbit.position();
     frameState->camera.target = orbit.target;
-    renderer->render(*frameState);
-    renderer->drawDisplay({.exposureEv = exposureEv}, 0, 0, 0, fbW, fbH);
+    const Cue* current = hasList ? &list->cues[cue] : nullptr;
+    const bool fading = current && sinceGo < current->delayS + current->fadeS;
+    const bool moved = orbit.position() != lastOrbit.position() || orbit.target != lastOrbit.target ||
+                       show->atmosphere.scattering != lastScattering;
+    lastOrbit = orbit;
+    lastScattering = show->atmosphere.scattering;
+    Renderer* r = nullptr;
+    if (fading || moved) {
+      r = draft.get();
+      r->render(*frameState);
+      stillFrames = 0;
+    } else {
+      r = still.get();
+      r->render(*frameState, stillFrames > 0);  // keep adding jittered frames while still
+      ++stillFrames;
+    }
+    r->drawDisplay({.exposureEv = exposureEv}, 0, 0, 0, fbW, fbH);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
