@@ -380,7 +380,7 @@ Result<MvrImport> importMvr(const std::filesystem::path& mvrFile, const std::fil
     def.rotationDeg = mvrRotationToHazeDeg(rot);
     const glm::dmat3 hazeFromMvr(1, 0, 0, 0, 0, -1, 0, 1, 0);
     const glm::dmat3 rHaze = hazeFromMvr * rot * glm::transpose(hazeFromMvr);
-    const glm::vec3 posM = mvrPointToHazeM(glm::dvec3(w[3])) - glm::vec3(rHaze * glm::dvec3(g.pivotOffsetM));
+    const glm::vec3 posM = mvrPointToHazeM(glm::dvec3(w[3])) + glm::vec3(rHaze * glm::dvec3(g.pivotOffsetM));
     def.position = glm::vec3(std::round(posM.x * 1e4f) / 1e4f, std::round(posM.y * 1e4f) / 1e4f, std::round(posM.z * 1e4f) / 1e4f);
     lo = glm::min(lo, def.position);
     hi = glm::max(hi, def.position);

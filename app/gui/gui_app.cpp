@@ -19,6 +19,7 @@
 #include "app/commands.h"
 #include "app/frame_builder.h"
 #include "app/render_session.h"
+#include "app/udp_receiver.h"
 #include "app/window_context.h"
 #include "renderer/gl/gl.h"
 #include "renderer/renderer.h"
@@ -53,6 +54,8 @@ struct Options {
   std::string screenshot;
   int frames = 0;
   int width = 1280, height = 720;
+  bool artNet = false, sacn = false;  // live DMX input from a console drives the fixtures
+  std::string bind = "127.0.0.1";
 };
 
 int fail(const std::string& line) {
@@ -85,6 +88,9 @@ int runGui(const Args& args) {
       return std::from_chars(s.data(), s.data() + s.size(), dst).ec == std::errc() && dst > 0;
     };
     if (a == "--screenshot" && i + 1 < args.size()) opt.screenshot = args[++i];
+    else if (a == "--artnet") opt.artNet = true;
+    else if (a == "--sacn") opt.sacn = true;
+    else if (a == "--bind" && i + 1 < args.size()) opt.bind = args[++i];
     else if (a == "--frames") { if (!intValue(opt.frames)) return fail("--frames needs a positive number"); }
     else if (a == "--width") { if (!intValue(opt.width)) return fail("--width needs a positive number"); }
     else if (a == "--height") { if (!intValue(opt.height)) return fail("--height needs a positive number"); }
@@ -100,6 +106,16 @@ int runGui(const Args& args) {
   if (!profiles) return fail(profiles.error().str());
   auto venue = loadVenue(show->resolve(show->venueGltf));
   if (!venue) return fail(venue.error().str());
+  std::unique_ptr<LiveReceiver> live;
+  if (opt.artNet || opt.sacn) {
+    LiveOptions lo;
+    lo.udp.bindAddress = opt.bind;
+    lo.udp.artNet = opt.artNet;
+    lo.udp.sacn = opt.sacn;
+    auto r = LiveReceiver::open(*show, *profiles, lo);
+    if (!r) return fail(r.error().str());
+    live = std::move(*r);
+  }
 
 #ifdef NDEBUG
   const bool debugGl = std::getenv("HAZE_GL_DEBUG") != nullptr;
@@ -188,6 +204,16 @@ int runGui(const Args& args) {
         if (ImGui::Selectable(label.c_str(), i == cue)) go(i);
       }
     }
+    if (live) {
+      ImGui::Separator();
+      ImGui::Text("Live DMX on %s: %.0f packets/s", opt.bind.c_str(), live->packetRate());
+      const auto sources = live->sources();
+      if (sources.empty()) ImGui::TextUnformatted("no source: holding the last levels");
+      for (const DmxSourceInfo& src : sources)
+        ImGui::Text("%s %s  universe %d  priority %d", src.winning ? "*" : " ", src.name.c_str(), src.universe,
+                    src.priority);
+      ImGui::Separator();
+    }
     ImGui::SliderFloat("Haze (1/m)", &show->atmosphere.scattering, 0.0f, 0.2f, "%.3f");
     ImGui::SliderFloat("Exposure (EV)", &exposureEv, -6.0f, 6.0f, "%.1f");
     ImGui::TextUnformatted("Drag: orbit. Wheel: zoom. Space: GO.");
@@ -196,13 +222,14 @@ int runGui(const Args& args) {
 
     const auto t0 = std::chrono::steady_clock::now();
     const double sinceGo = std::chrono::duration<double>(t0 - goTime).count();
-    StageState state = hasList ? stateAt(*show, *profiles, *list, cue, sinceGo) : StageState{};
+    // A console on the network drives the rig directly; otherwise the cue list does.
+    StageState state = live ? live->poll(0) : hasList ? stateAt(*show, *profiles, *list, cue, sinceGo) : StageState{};
     auto frameState = buildFrame(*show, *profiles, state, "");
     if (!frameState) { exitCode = fail(frameState.error().str()); break; }
     frameState->camera.position = orbit.position();
     frameState->camera.target = orbit.target;
     const Cue* current = hasList ? &list->cues[cue] : nullptr;
-    const bool fading = current && sinceGo < current->delayS + current->fadeS;
+    const bool fading = live || (current && sinceGo < current->delayS + current->fadeS);
     const bool moved = orbit.position() != lastOrbit.position() || orbit.target != lastOrbit.target ||
                        show->atmosphere.scattering != lastScattering;
     lastOrbit = orbit;
