@@ -92,4 +92,55 @@ FrameState benchFrame(int fixtures) {
   return f;
 }
 
+Venue studyVenue() {
+  Venue v;
+  v.materials.push_back(Material{.name = "default"});
+  v.materials.push_back(Material{.name = "floor", .baseColor = glm::vec4(0.4f, 0.4f, 0.4f, 1)});
+  v.boundsMin = glm::vec3(1e9f);
+  v.boundsMax = glm::vec3(-1e9f);
+  addBox(v, 1, {-8, -0.1f, -8}, {8, 0, 8});
+  // A sphere (UV, 24 x 48) in the beam.
+  Primitive p;
+  p.name = "sphere";
+  p.material = 1;
+  const glm::vec3 c(0.3f, 3.0f, 0.0f);
+  const float radius = 0.6f;
+  const int rings = 24, segments = 48;
+  for (int j = 0; j <= rings; ++j)
+    for (int i = 0; i <= segments; ++i) {
+      const float th = 3.14159265f * static_cast<float>(j) / rings, ph = 6.2831853f * static_cast<float>(i) / segments;
+      const glm::vec3 n(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
+      p.positions.push_back(c + radius * n);
+      p.normals.push_back(n);
+    }
+  for (int j = 0; j < rings; ++j)
+    for (int i = 0; i < segments; ++i) {
+      const auto a = static_cast<uint32_t>(j * (segments + 1) + i), b = a + 1, d = a + segments + 1, e = d + 1;
+      p.indices.insert(p.indices.end(), {a, d, b, b, d, e});
+    }
+  v.primitives.push_back(std::move(p));
+  v.boundsMin = glm::min(v.boundsMin, c - glm::vec3(radius));
+  v.boundsMax = glm::max(v.boundsMax, c + glm::vec3(radius));
+  return v;
+}
+
+FrameState studyFrame() {
+  FrameState f;
+  f.camera.position = {0.0f, 3.5f, 11.0f};
+  f.camera.target = {0.0f, 3.0f, 0.0f};
+  f.camera.fovYDeg = 45.0f;
+  f.medium.scattering = 0.05f;
+  BeamState b;
+  b.fixtureId = 1;
+  b.pose = beamPose({0.0f, 7.0f, 0.0f}, glm::vec3(0.0f), 0.0f, 0.0f, glm::vec3(0.0f));
+  b.optics.distribution = std::make_shared<Distribution>(*parametricDistribution(22.0f, 32.0f, 50000.0f));
+  b.optics.profileFieldAngleDeg = 32.0f;
+  b.optics.fieldAngleDeg = 32.0f;
+  b.optics.dimmer = 1.0f;
+  b.poseKey = 1;
+  b.opticsKey = 1;
+  f.beams.push_back(std::move(b));
+  return f;
+}
+
 }  // namespace haze

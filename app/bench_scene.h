@@ -10,5 +10,9 @@ namespace haze {
 
 Venue benchVenue();
 FrameState benchFrame(int fixtures);
+// The accuracy study's scene (after Dobashi et al. 2000, figures 5 and 6): one spot in haze
+// with a sphere in its beam, seen from the side, so the shadow shaft is in view.
+Venue studyVenue();
+FrameState studyFrame();
 
 }  // namespace haze

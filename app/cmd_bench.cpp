@@ -32,12 +32,94 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// The paper's accuracy study redone against the reference: error and time per plane count,
+// per lattice size, and for the jittered, fused and accumulated variants (docs/rendering.md).
+int runStudy(int width, int height) {
+  const Venue venue = studyVenue();
+  const FrameState frame = studyFrame();
+  const auto t0 = std::chrono::steady_clock::now();
+  const ImageRGB ref = renderReference(venue, frame, width, height);
+  const double refMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  float maxL = 0.0f;
+  for (const glm::vec3& p : ref.pixels) maxL = std::max({maxL, p.r, p.g, p.b});
+  std::printf("| variant | planes | mean relative error | ms per frame |\n| --- | --- | --- | --- |\n");
+  std::printf("| reference | - | 0 | %.0f |\n", refMs);
+  struct Variant {
+    std::string name;
+    RenderSettings s;
+  };
+  std::vector<Variant> variants;
+  const RenderSettings base{.width = width, .height = height, .lightMapSize = 1024, .shadowMapSize = 2048};
+  for (int planes : {15, 30, 75, 150}) {
+    RenderSettings s = base;
+    s.planes = planes;
+    s.fusedPlanes = false;
+    s.jitter = false;
+    variants.push_back({"planes, per pixel, no jitter", s});
+  }
+  for (int lattice : {5, 20, 80}) {
+    RenderSettings s = base;
+    s.planes = 75;
+    s.lattice = lattice;
+    variants.push_back({"lattice " + std::to_string(lattice) + "x" + std::to_string(lattice), s});
+  }
+  for (int planes : {15, 30, 75, 150}) {
+    RenderSettings s = base;
+    s.planes = planes;
+    s.fusedPlanes = false;
+    s.jitter = true;
+    variants.push_back({"planes, jittered", s});
+  }
+  for (int planes : {15, 30, 75}) {
+    RenderSettings s = base;
+    s.planes = planes;
+    s.fusedPlanes = false;
+    s.frames = 8;
+    variants.push_back({"planes, jittered, 8 frames accumulated", s});
+  }
+  for (int planes : {15, 30, 75, 150}) {
+    RenderSettings s = base;
+    s.planes = planes;
+    s.minSamplesPerChord = 0;
+    variants.push_back({"fused, jittered", s});
+  }
+  for (int planes : {15, 48}) {
+    RenderSettings s = base;
+    s.planes = planes;
+    s.minSamplesPerChord = 16;
+    variants.push_back({"fused, jittered, 16 samples per chord", s});
+  }
+  for (const Variant& v : variants) {
+    auto r = Renderer::create(venue, v.s);
+    if (!r) return fail(r.error().str());
+    (*r)->render(frame);  // shadow map and light map made here
+    std::vector<double> times;
+    for (int i = 0; i < 3; ++i) {
+      const auto t1 = std::chrono::steady_clock::now();
+      (*r)->render(frame);
+      times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count());
+    }
+    const ImageRGB gpu = (*r)->readRadiance();
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < ref.pixels.size(); ++i)
+      for (int c = 0; c < 3; ++c)
+        if (ref.pixels[i][c] > 0.01f * maxL) {
+          sum += std::abs(gpu.pixels[i][c] - ref.pixels[i][c]) / ref.pixels[i][c];
+          ++n;
+        }
+    std::printf("| %s | %d | %.2f %% | %.1f |\n", v.name.c_str(), v.s.planes, n ? 100.0 * sum / static_cast<double>(n) : 0.0,
+                median(times));
+  }
+  return 0;
+}
+
 }  // namespace
 
 int runBench(const Args& args) {
   int fixtures = 16, width = 1280, height = 720, frames = 5;
   std::string quality = "default";
-  bool json = false, compare = false;
+  bool json = false, compare = false, study = false;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto intValue = [&](int& dst, int lo, int hi) {
@@ -53,6 +135,7 @@ int runBench(const Args& args) {
     else if (a == "--quality" && i + 1 < args.size()) quality = args[++i];
     else if (a == "--json") json = true;
     else if (a == "--compare-reference") compare = true;
+    else if (a == "--study") study = true;
     else return fail("unknown option '" + a + "' (usage: haze bench [--fixtures N] [--width W --height H] "
                      "[--quality Q] [--frames K] [--compare-reference] [--json])");
   }
@@ -60,6 +143,7 @@ int runBench(const Args& args) {
   if (!q) return fail(q.error().str());
   auto ctx = createHeadlessContext();
   if (!ctx) return fail(ctx.error().str());
+  if (study) return runStudy(width, height);
   const Venue venue = benchVenue();
   const FrameState frame = benchFrame(fixtures);
   auto renderer = Renderer::create(venue, renderSettingsFor(*q, width, height));

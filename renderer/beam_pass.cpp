@@ -92,13 +92,21 @@ Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings&
   p.settings_.planes = std::clamp(settings.planes, 1, 4096);
   p.settings_.scatterDivisor = std::clamp(settings.scatterDivisor, 1, 8);
   p.settings_.frames = std::clamp(settings.frames, 1, 1024);
+  p.settings_.lattice = std::clamp(settings.lattice, 0, 1024);
+  if (p.settings_.lattice > 0) {  // the paper's form: plane instances, lattice points, no jitter
+    p.settings_.fused = false;
+    p.settings_.jitter = false;
+  }
   p.width_ = width;
   p.height_ = height;
   p.lowW_ = std::max(1, (width + p.settings_.scatterDivisor - 1) / p.settings_.scatterDivisor);
   p.lowH_ = std::max(1, (height + p.settings_.scatterDivisor - 1) / p.settings_.scatterDivisor);
 
+  std::vector<std::string> defines;
+  if (p.settings_.fused) defines.push_back("FUSED");
+  if (p.settings_.lattice > 0) defines.push_back("LATTICE");
   auto planes = gl::buildProgram({.label = "virtual_planes", .vertex = "planes.vert.glsl", .fragment = "planes.frag.glsl",
-                                  .defines = settings.fused ? std::vector<std::string>{"FUSED"} : std::vector<std::string>{}});
+                                  .defines = defines});
   if (!planes) return planes.error();
   auto composite = gl::buildProgram({.label = "scatter_composite", .vertex = "fullscreen.vert.glsl",
                                      .fragment = "composite.frag.glsl"});
@@ -164,6 +172,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, f
   glProgramUniform1i(prog, 7, settings_.jitter ? 1 : 0);
   glProgramUniform1i(prog, 8, settings_.planes);
   glProgramUniform1i(prog, 9, settings_.minSamplesPerChord);
+  glProgramUniform2i(prog, 10, settings_.lattice, settings_.lattice);
   glProgramUniform1i(prog, 25, static_cast<int>(med.phase));
   glProgramUniform1f(prog, 26, med.g);
   beams.bind(0, 1, 2);
@@ -181,7 +190,10 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, f
       glProgramUniform2f(prog, 1, fp.zNear, dz);
       glProgramUniform1i(prog, 2, static_cast<int>(i));
       const int instances = settings_.fused ? 1 : settings_.planes;
-      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, instances);
+      if (settings_.lattice > 0)
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * settings_.lattice * settings_.lattice, instances);
+      else
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, instances);
       const double px = (fp.rectNdc.z - fp.rectNdc.x) * 0.5 * lowW_ * (fp.rectNdc.w - fp.rectNdc.y) * 0.5 * lowH_;
       fragments += static_cast<uint64_t>(px) * static_cast<uint64_t>(instances);
     }

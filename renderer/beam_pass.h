@@ -27,6 +27,10 @@ struct BeamPassSettings {
   // Fused only: where a ray's chord through the cone spans fewer planes than this, the plane
   // lattice is refined by halving for that ray, so thin-looking beams keep their detail.
   int minSamplesPerChord = 8;
+  // > 0: the paper's lattice mode: each plane is evaluated at the corners of a lattice x
+  // lattice grid over the beam's footprint and interpolated by the rasteriser (no jitter, not
+  // fused). For the accuracy study against the reference.
+  int lattice = 0;
 };
 
 // What a beam covers on screen and in view depth.

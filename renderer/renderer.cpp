@@ -67,7 +67,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   auto pass = BeamPass::create(settings.width, settings.height,
                                {.planes = settings.planes, .scatterDivisor = settings.scatterDivisor,
                                 .frames = settings.frames, .jitter = settings.jitter,
-                                .fused = settings.fusedPlanes, .minSamplesPerChord = settings.minSamplesPerChord});
+                                .fused = settings.fusedPlanes, .minSamplesPerChord = settings.minSamplesPerChord,
+                                .lattice = settings.lattice});
   if (!pass) return pass.error();
   impl->beamPass = std::move(*pass);
 

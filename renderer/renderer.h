@@ -25,6 +25,7 @@ struct RenderSettings {
   bool jitter = true;
   bool fusedPlanes = true;  // see BeamPassSettings::fused
   int minSamplesPerChord = 8;
+  int lattice = 0;          // see BeamPassSettings::lattice
 };
 
 struct DisplaySettings {

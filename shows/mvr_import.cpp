@@ -112,7 +112,7 @@ class SceneWalker {
         if (kind == "FocusPoint") focusPointsMm[lower(obj.attribute("uuid").value())] = glm::dvec3(world[3]);
         if (!obj.child("GDTFSpec").text().empty() && kind != "FocusPoint")
           warnOnce("gdtf-" + kind, obj, "a " + kind + " with a GDTFSpec is imported as geometry only, not as a fixture");
-        addGeometries(obj.child("Geometries"), world, depth + 1);
+        addGeometries(obj.child("Geometries"), world, depth + 1, "");
         walkChildren(obj.child("ChildList"), world, depth + 1);
       } else {
         warnOnce("object/" + kind, obj, "unknown scene element <" + kind + ">; ignored");
@@ -120,7 +120,9 @@ class SceneWalker {
     }
   }
 
-  void addGeometries(const pugi::xml_node& list, const glm::dmat4& parent, int depth) {
+  // symbolPlace: the outermost <Symbol> that led here, so each placement is named by its own
+  // place rather than by the shared Symdef's.
+  void addGeometries(const pugi::xml_node& list, const glm::dmat4& parent, int depth, const std::string& symbolPlace) {
     if (!list) return;
     if (depth > kMaxDepth) {
       warn(list, "symbols nested deeper than " + std::to_string(kMaxDepth) + " levels (a symbol using itself?); left out");
@@ -136,14 +138,14 @@ class SceneWalker {
           warn(g, "Geometry3D without fileName; ignored");
           continue;
         }
-        geometry.push_back({file, world, place(g)});
+        geometry.push_back({file, world, symbolPlace.empty() ? place(g) : symbolPlace});
       } else if (kind == "Symbol") {
         auto it = symdefs_.find(lower(g.attribute("symdef").value()));
         if (it == symdefs_.end()) {
           warn(g, std::string("Symbol names symdef \"") + g.attribute("symdef").value() + "\", which <AUXData> does not define; ignored");
           continue;
         }
-        addGeometries(it->second.child("ChildList"), world, depth + 1);
+        addGeometries(it->second.child("ChildList"), world, depth + 1, symbolPlace.empty() ? place(g) : symbolPlace);
       } else {
         warnOnce("geometry/" + kind, g, "unknown geometry element <" + kind + ">; ignored");
       }

@@ -100,12 +100,16 @@ Result<MvrVenueStats> writeMvrVenue(const ZipArchive& archive, const std::vector
   mvrToHaze[1][2] = -1e-3;
   mvrToHaze[2][1] = 1e-3;
   mvrToHaze[3][3] = 1.0;
-  // glTF file (m, Y-up) -> MVR local (mm, Z-up): the inverse map, scaled.
-  glm::dmat4 gltfToMvr(0.0);
-  gltfToMvr[0][0] = 1e3;
-  gltfToMvr[1][2] = 1e3;
-  gltfToMvr[2][1] = -1e3;
-  gltfToMvr[3][3] = 1.0;
+  // Y-up file frame -> MVR local (Z-up): (x, y, z) -> (x, -z, y). glTF files need it with a
+  // scale (metres -> mm); .3ds files need it too, without the scale, because assimp's 3DS
+  // loader turns the file's Z-up into Y-up with (x, y, z) -> (x, z, -y) on its root node, which
+  // aiProcess_PreTransformVertices bakes into the vertices.
+  glm::dmat4 yUpToMvr(0.0);
+  yUpToMvr[0][0] = 1.0;
+  yUpToMvr[1][2] = 1.0;
+  yUpToMvr[2][1] = -1.0;
+  yUpToMvr[3][3] = 1.0;
+  const glm::dmat4 gltfToMvr = yUpToMvr * glm::dmat4(glm::dmat3(1e3));
 
   MvrVenueStats stats;
   std::map<std::string, int> meshIndex;  // file -> glTF mesh, -1 when it failed
@@ -150,13 +154,13 @@ Result<MvrVenueStats> writeMvrVenue(const ZipArchive& archive, const std::vector
         it = meshIndex.emplace(inst.fileName, static_cast<int>(meshes.size() - 1)).first;
         ++stats.meshes;
         if (mesh.yUpMetres) meshes.back()["extras"] = {{"mvr_units", "m, Y-up"}};
-        else meshes.back()["extras"] = {{"mvr_units", "mm, Z-up"}};
+        else meshes.back()["extras"] = {{"mvr_units", "mm, Y-up (assimp turned the .3ds Z-up)"}};
         stats.triangles += mesh.indices.size() / 3;
       }
     }
     if (it->second < 0) continue;
-    const bool yUp = lowerExt(inst.fileName) != "3ds";
-    const glm::dmat4 m = mvrToHaze * inst.worldMm * (yUp ? gltfToMvr : glm::dmat4(1.0));
+    const bool yUp = lowerExt(inst.fileName) != "3ds";  // glTF: metres
+    const glm::dmat4 m = mvrToHaze * inst.worldMm * (yUp ? gltfToMvr : yUpToMvr);
     nlohmann::json matrix = nlohmann::json::array();
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) matrix.push_back(static_cast<double>(static_cast<float>(m[c][r])));

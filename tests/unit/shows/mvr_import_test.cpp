@@ -230,6 +230,62 @@ TEST(MvrImport, TrussSymbolIsTwoAndAHalfMetresLong) {
   EXPECT_TRUE(found);
 }
 
+// The venue's geometry lands where the XML puts it, in haze's frame: a truss piece (a .3ds,
+// mm, Z-up, placed by a Symbol) and a focus point marker (a .glb, m, Y-up).
+std::pair<glm::dvec3, glm::dvec3> nodeBounds(const nlohmann::json& gltf, const std::string& nodeName) {
+  for (const auto& n : gltf["nodes"]) {
+    if (n["name"] != nodeName) continue;
+    const auto& m = n["matrix"];
+    const auto& acc = gltf["accessors"][gltf["meshes"][n["mesh"].get<int>()]["primitives"][0]["attributes"]["POSITION"].get<int>()];
+    glm::dvec3 lo(1e30), hi(-1e30);
+    for (int corner = 0; corner < 8; ++corner) {
+      double p[3];
+      for (int k = 0; k < 3; ++k) p[k] = ((corner >> k) & 1) ? acc["max"][k].get<double>() : acc["min"][k].get<double>();
+      for (int r = 0; r < 3; ++r) {
+        double v = m[12 + r].get<double>();
+        for (int c = 0; c < 3; ++c) v += m[4 * c + r].get<double>() * p[c];
+        lo[r] = std::min(lo[r], v);
+        hi[r] = std::max(hi[r], v);
+      }
+    }
+    return {lo, hi};
+  }
+  ADD_FAILURE() << "no venue node named " << nodeName;
+  return {};
+}
+
+TEST(MvrImport, VenueGeometryIsPlacedInHazeFrame) {
+  {
+    Imported imp("capture_demo_show.mvr");
+    ASSERT_TRUE(imp.result.ok());
+    std::ifstream in(imp.dir / "rig_venue.gltf");
+    const auto gltf = nlohmann::json::parse(in, nullptr, false);
+    // Line 155: the Symbol of the Truss at line 152, whose Matrix turns the truss's local X
+    // (its 2.5 m length) to MVR -Z and puts its middle at (-6823.1, -884.5, 2351.6) mm.
+    const auto [lo, hi] = nodeBounds(gltf, "GeneralSceneDescription.xml line 155 <Symbol>");
+    const double mid[3] = {-6823.14355, -884.489563, 2351.63037};
+    const glm::dvec3 centre = toHaze(mid);
+    EXPECT_NEAR(hi.y - lo.y, 2.5, 0.02);  // upright in haze: Y is up
+    EXPECT_LT(hi.x - lo.x, 0.5);
+    EXPECT_LT(hi.z - lo.z, 0.5);
+    EXPECT_LT(glm::length(0.5 * (lo + hi) - centre), 0.02);
+  }
+  {
+    Imported imp("scene_objects.mvr");
+    ASSERT_TRUE(imp.result.ok());
+    std::ifstream in(imp.dir / "rig_venue.gltf");
+    const auto gltf = nlohmann::json::parse(in, nullptr, false);
+    // Line 1957: the marker of FocusPoint A1 at (-14198.6, 7189.12, 2438.4) mm, a flat disc of
+    // 0.457 m across lying in glTF's XZ plane, i.e. horizontal.
+    const auto [lo, hi] = nodeBounds(gltf, "GeneralSceneDescription.xml line 1957 <Geometry3D>");
+    EXPECT_NEAR(lo.y, 2.4384, 1e-3);
+    EXPECT_NEAR(hi.y, 2.4384, 1e-3);
+    EXPECT_NEAR(hi.x - lo.x, 0.4572, 2e-3);
+    EXPECT_NEAR(0.5 * (lo.x + hi.x), -14.1986, 2e-3);
+    EXPECT_NEAR(0.5 * (lo.z + hi.z), -7.18912, 2e-3);
+  }
+}
+
 // --- broken MVRs ---------------------------------------------------------------------------
 
 std::string gdtfBytes() {
