@@ -26,6 +26,22 @@ int fail(const std::string& line) {
   return 1;
 }
 
+// physics.md "Accuracy": mean relative error over the values where the reference is above
+// 1 % of its maximum.
+double meanRelativeError(const ImageRGB& gpu, const ImageRGB& ref) {
+  float maxL = 0.0f;
+  for (const glm::vec3& p : ref.pixels) maxL = std::max({maxL, p.r, p.g, p.b});
+  double sum = 0.0;
+  size_t n = 0;
+  for (size_t i = 0; i < ref.pixels.size() && i < gpu.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      if (ref.pixels[i][c] > 0.01f * maxL) {
+        sum += std::abs(gpu.pixels[i][c] - ref.pixels[i][c]) / ref.pixels[i][c];
+        ++n;
+      }
+  return n ? sum / static_cast<double>(n) : 0.0;
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
@@ -40,8 +56,6 @@ int runStudy(int width, int height) {
   const auto t0 = std::chrono::steady_clock::now();
   const ImageRGB ref = renderReference(venue, frame, width, height);
   const double refMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  float maxL = 0.0f;
-  for (const glm::vec3& p : ref.pixels) maxL = std::max({maxL, p.r, p.g, p.b});
   std::printf("| variant | planes | mean relative error | ms per frame |\n| --- | --- | --- | --- |\n");
   std::printf("| reference | - | 0 | %.0f |\n", refMs);
   struct Variant {
@@ -99,17 +113,8 @@ int runStudy(int width, int height) {
       (*r)->render(frame);
       times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count());
     }
-    const ImageRGB gpu = (*r)->readRadiance();
-    double sum = 0.0;
-    size_t n = 0;
-    for (size_t i = 0; i < ref.pixels.size(); ++i)
-      for (int c = 0; c < 3; ++c)
-        if (ref.pixels[i][c] > 0.01f * maxL) {
-          sum += std::abs(gpu.pixels[i][c] - ref.pixels[i][c]) / ref.pixels[i][c];
-          ++n;
-        }
-    std::printf("| %s | %d | %.2f %% | %.1f |\n", v.name.c_str(), v.s.planes, n ? 100.0 * sum / static_cast<double>(n) : 0.0,
-                median(times));
+    std::printf("| %s | %d | %.2f %% | %.1f |\n", v.name.c_str(), v.s.planes,
+                100.0 * meanRelativeError((*r)->readRadiance(), ref), median(times));
   }
   return 0;
 }
@@ -190,18 +195,8 @@ int runBench(const Args& args) {
     const auto t0 = std::chrono::steady_clock::now();
     const ImageRGB ref = renderReference(venue, frame, width, height);
     const double refMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    float maxL = 0.0f;
-    for (const glm::vec3& p : ref.pixels) maxL = std::max({maxL, p.r, p.g, p.b});
-    double sum = 0.0;
-    size_t n = 0;
-    for (size_t i = 0; i < ref.pixels.size(); ++i)
-      for (int c = 0; c < 3; ++c)
-        if (ref.pixels[i][c] > 0.01f * maxL) {
-          sum += std::abs(gpu.pixels[i][c] - ref.pixels[i][c]) / ref.pixels[i][c];
-          ++n;
-        }
     out["reference_ms"] = refMs;
-    out["mean_relative_error"] = n ? sum / static_cast<double>(n) : 0.0;
+    out["mean_relative_error"] = meanRelativeError(gpu, ref);
     out["speedup_vs_reference"] = median(total) > 0 ? refMs / median(total) : 0.0;
   }
   if (json) {

@@ -17,6 +17,7 @@ constexpr const char* kHelp =
     "  haze render SHOW --all-cues -o DIR/  one image per cue\n"
     "  haze state SHOW --cue N [--at S] [--list NAME] --json\n"
     "  haze validate SHOW\n"
+    "  haze import-mvr FILE.mvr -o SHOW.haze.json\n"
     "  haze fixture info FILE --json        native profile, .ies, .ldt or .gdtf\n"
     "  haze bench [--fixtures N] [--width W --height H] [--quality Q] --json\n"
     "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S] [--state-json OUT] [--render OUT.png]\n"
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
   if (cmd == "fixture") return haze::runFixture(rest);
   if (cmd == "bench") return haze::runBench(rest);
   if (cmd == "live") return haze::runLive(rest);
+  if (cmd == "import-mvr") return haze::runImportMvr(rest);
   if (cmd == "open") return haze::runGui(rest);
   if (cmd == "--help" || cmd == "-h" || cmd == "help") {
     std::fputs(kHelp, stdout);

@@ -269,6 +269,16 @@ TEST(MvrImport, VenueGeometryIsPlacedInHazeFrame) {
     EXPECT_LT(hi.x - lo.x, 0.5);
     EXPECT_LT(hi.z - lo.z, 0.5);
     EXPECT_LT(glm::length(0.5 * (lo + hi) - centre), 0.02);
+    // Nothing of the set lies below the stage floor (MVR z = 0): a .3ds read in the wrong axes
+    // puts the floor pieces tens of metres under it.
+    double lowest = 1e30, highest = -1e30;
+    for (std::size_t i = 0; i < gltf["nodes"].size(); ++i) {
+      const auto [nlo, nhi] = nodeBounds(gltf, gltf["nodes"][i]["name"].get<std::string>());
+      lowest = std::min(lowest, nlo.y);
+      highest = std::max(highest, nhi.y);
+    }
+    EXPECT_GT(lowest, -0.5);
+    EXPECT_LT(highest, 20.0);
   }
   {
     Imported imp("scene_objects.mvr");
