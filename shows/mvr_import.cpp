@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -26,6 +27,9 @@ namespace {
 
 constexpr const char* kSceneXml = "GeneralSceneDescription.xml";
 constexpr int kMaxDepth = 32;  // nesting of groups and symbols; bounds a symbol that names itself
+// Placements of geometry in all: symbols of symbols multiply, so a small hostile file could ask
+// for 10^30 of them; real rigs have a few thousand.
+constexpr std::size_t kMaxGeometryInstances = 200000;
 
 struct FixtureSource {
   std::string spec, mode, name, fixtureId, address, focus, place;
@@ -44,11 +48,14 @@ struct GdtfEntry {
 
 class SceneWalker {
  public:
-  SceneWalker(const std::string& text, std::vector<std::string>& warnings) : text_(text), warnings_(warnings) {}
+  SceneWalker(const std::string& text, std::vector<std::string>& warnings) : warnings_(warnings) {
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '\n') newlines_.push_back(i);
+  }
 
   std::string place(const pugi::xml_node& n) const {
     const auto offset = static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, n.offset_debug()));
-    const std::size_t line = 1 + static_cast<std::size_t>(std::count(text_.begin(), text_.begin() + static_cast<std::ptrdiff_t>(std::min(offset, text_.size())), '\n'));
+    const std::size_t line = 1 + static_cast<std::size_t>(std::lower_bound(newlines_.begin(), newlines_.end(), offset) - newlines_.begin());
     std::string s = std::string(kSceneXml) + " line " + std::to_string(line) + " <" + n.name();
     if (const char* nm = n.attribute("name").value(); *nm) s += std::string(" name=\"") + nm + "\"";
     return s + ">";
@@ -132,6 +139,10 @@ class SceneWalker {
       if (g.type() != pugi::node_element) continue;
       const std::string kind = g.name();
       const glm::dmat4 world = parent * localMatrix(g);
+      if (geometry.size() >= kMaxGeometryInstances) {
+        warnOnce("instances", g, "more than " + std::to_string(kMaxGeometryInstances) + " geometry placements; the rest is left out");
+        return;
+      }
       if (kind == "Geometry3D") {
         const std::string file = g.attribute("fileName").value();
         if (file.empty()) {
@@ -183,7 +194,7 @@ class SceneWalker {
     fixtures.push_back(std::move(f));
   }
 
-  const std::string& text_;
+  std::vector<std::size_t> newlines_;  // offsets of '\n' in the XML, for line numbers
   std::vector<std::string>& warnings_;
   std::set<std::string> warned_;
   std::map<std::string, pugi::xml_node> symdefs_;

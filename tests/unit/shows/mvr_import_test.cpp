@@ -232,9 +232,8 @@ TEST(MvrImport, TrussSymbolIsTwoAndAHalfMetresLong) {
 
 // The venue's geometry lands where the XML puts it, in haze's frame: a truss piece (a .3ds,
 // mm, Z-up, placed by a Symbol) and a focus point marker (a .glb, m, Y-up).
-std::pair<glm::dvec3, glm::dvec3> nodeBounds(const nlohmann::json& gltf, const std::string& nodeName) {
-  for (const auto& n : gltf["nodes"]) {
-    if (n["name"] != nodeName) continue;
+std::pair<glm::dvec3, glm::dvec3> boundsOf(const nlohmann::json& gltf, const nlohmann::json& n) {
+  {
     const auto& m = n["matrix"];
     const auto& acc = gltf["accessors"][gltf["meshes"][n["mesh"].get<int>()]["primitives"][0]["attributes"]["POSITION"].get<int>()];
     glm::dvec3 lo(1e30), hi(-1e30);
@@ -250,6 +249,11 @@ std::pair<glm::dvec3, glm::dvec3> nodeBounds(const nlohmann::json& gltf, const s
     }
     return {lo, hi};
   }
+}
+
+std::pair<glm::dvec3, glm::dvec3> nodeBounds(const nlohmann::json& gltf, const std::string& nodeName) {
+  for (const auto& n : gltf["nodes"])
+    if (n["name"] == nodeName) return boundsOf(gltf, n);
   ADD_FAILURE() << "no venue node named " << nodeName;
   return {};
 }
@@ -272,8 +276,8 @@ TEST(MvrImport, VenueGeometryIsPlacedInHazeFrame) {
     // Nothing of the set lies below the stage floor (MVR z = 0): a .3ds read in the wrong axes
     // puts the floor pieces tens of metres under it.
     double lowest = 1e30, highest = -1e30;
-    for (std::size_t i = 0; i < gltf["nodes"].size(); ++i) {
-      const auto [nlo, nhi] = nodeBounds(gltf, gltf["nodes"][i]["name"].get<std::string>());
+    for (const auto& node : gltf["nodes"]) {
+      const auto [nlo, nhi] = boundsOf(gltf, node);
       lowest = std::min(lowest, nlo.y);
       highest = std::max(highest, nhi.y);
     }
@@ -393,6 +397,23 @@ TEST(MvrBroken, BadFieldsAreWarnedNotFatal) {
   EXPECT_TRUE(b.warned("symbols nested deeper"));  // a symdef that uses itself ends, warned
   ASSERT_EQ(b.result->show.fixtures.size(), 1u);
   EXPECT_FALSE(b.result->show.fixtures[0].patch.has_value());
+}
+
+// Symbols of symbols multiply: 10 levels of 10 would be 10^10 placements. The import stops at
+// its limit with a warning instead of running out of memory.
+TEST(MvrBroken, SymbolExplosionIsBounded) {
+  std::string aux;
+  for (int level = 0; level < 10; ++level) {
+    aux += "<Symdef uuid=\"s" + std::to_string(level) + "\" name=\"s\"><ChildList>";
+    for (int i = 0; i < 10; ++i)
+      aux += level == 9 ? "<Geometry3D fileName=\"none.3ds\"/>" : "<Symbol uuid=\"x\" symdef=\"s" + std::to_string(level + 1) + "\"/>";
+    aux += "</ChildList></Symdef>";
+  }
+  const std::string xml = sceneXml("<SceneObject name=\"S\" uuid=\"o\"><Geometries><Symbol uuid=\"y\" symdef=\"s0\"/></Geometries></SceneObject>\n", aux);
+  Built b(true, {{"GeneralSceneDescription.xml", xml}});
+  ASSERT_TRUE(b.result.ok()) << b.result.error().str();
+  EXPECT_TRUE(b.warned("geometry placements; the rest is left out"));
+  EXPECT_TRUE(b.warned("none.3ds"));
 }
 
 TEST(MvrBroken, RefusesToOverwriteAnExistingShow) {
