@@ -403,9 +403,11 @@ Result<MvrImport> importMvr(const std::filesystem::path& mvrFile, const std::fil
   out.fixtureCount = static_cast<int>(show.fixtures.size());
 
   // Focus: one cue that aims each fixture at its focus point (pan/tilt within the profile's range).
+  // Every fixture at full, as at a focus call, so rendering the imported show shows the rig.
   Cue focusCue;
   focusCue.number = "1";
   focusCue.label = "Focus from MVR";
+  for (const FixtureDef& def : show.fixtures) focusCue.values[def.id].intensity = 1.0f;
   for (const auto& [index, uuid] : focusOf) {
     const FixtureDef& def = show.fixtures[index];
     auto fp = walker.focusPointsMm.find(uuid);
@@ -431,10 +433,9 @@ Result<MvrImport> importMvr(const std::filesystem::path& mvrFile, const std::fil
         continue;
       }
     }
-    CueValues values;
+    CueValues& values = focusCue.values[def.id];
     values.panDeg = pan;
     values.tiltDeg = tilt;
-    focusCue.values[def.id] = values;
   }
   if (!focusCue.values.empty()) show.cueLists.push_back(CueList{"MVR focus", {focusCue}});
 
