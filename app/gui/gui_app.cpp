@@ -24,7 +24,9 @@
 #include "renderer/gl/gl.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/image.h"
+#include "shows/mvr_import.h"
 #include "shows/playback.h"
+#include "shows/show_save.h"
 #include "shows/show.h"
 
 namespace haze {
@@ -61,6 +63,27 @@ struct Options {
 int fail(const std::string& line) {
   std::fprintf(stderr, "haze: %s\n", line.c_str());
   return 1;
+}
+
+// Everything the window shows of one show; replaced whole when another show is opened.
+struct Stage {
+  Show show;
+  ProfileSet profiles;
+  Venue venue;
+};
+
+Result<std::unique_ptr<Stage>> openStage(const std::string& file) {
+  auto stage = std::make_unique<Stage>();
+  auto show = loadShow(file);
+  if (!show) return show.error();
+  stage->show = std::move(*show);
+  auto profiles = loadProfiles(stage->show);
+  if (!profiles) return profiles.error();
+  stage->profiles = std::move(*profiles);
+  auto venue = loadVenue(stage->show.resolve(stage->show.venueGltf));
+  if (!venue) return venue.error();
+  stage->venue = std::move(*venue);
+  return stage;
 }
 
 Status saveScreenshot(int width, int height, const std::string& file) {
@@ -100,19 +123,16 @@ int runGui(const Args& args) {
   if (opt.show.empty()) opt.show = HAZE_DEMO_SHOW;
   if (!opt.screenshot.empty() && opt.frames <= 0) opt.frames = 3;
 
-  auto show = loadShow(opt.show);
-  if (!show) return fail(show.error().str());
-  auto profiles = loadProfiles(*show);
-  if (!profiles) return fail(profiles.error().str());
-  auto venue = loadVenue(show->resolve(show->venueGltf));
-  if (!venue) return fail(venue.error().str());
+  auto opened = openStage(opt.show);
+  if (!opened) return fail(opened.error().str());
+  std::unique_ptr<Stage> stage = std::move(*opened);
   std::unique_ptr<LiveReceiver> live;
   if (opt.artNet || opt.sacn) {
     LiveOptions lo;
     lo.udp.bindAddress = opt.bind;
     lo.udp.artNet = opt.artNet;
     lo.udp.sacn = opt.sacn;
-    auto r = LiveReceiver::open(*show, *profiles, lo);
+    auto r = LiveReceiver::open(stage->show, stage->profiles, lo);
     if (!r) return fail(r.error().str());
     live = std::move(*r);
   }
@@ -122,7 +142,7 @@ int runGui(const Args& args) {
 #else
   const bool debugGl = true;  // debug builds always report GL errors (KHR_debug)
 #endif
-  auto ctx = WindowContext::create(opt.width, opt.height, "haze - " + show->file.filename().string(), debugGl);
+  auto ctx = WindowContext::create(opt.width, opt.height, "haze - " + stage->show.file.filename().string(), debugGl);
   if (!ctx) return fail(ctx.error().str());
   GLFWwindow* window = (*ctx)->window();
 
@@ -140,10 +160,25 @@ int runGui(const Args& args) {
   int stillFrames = 0;
   Orbit lastOrbit{};
   float lastScattering = -1.0f;
-  const CueList* list = show->findCueList("");
+  const CueList* list = stage->show.findCueList("");
   size_t cue = 0;
   auto goTime = std::chrono::steady_clock::now();
-  Orbit orbit = show->cameras.empty() ? Orbit{} : Orbit::from(show->cameras.front());
+  Orbit orbit = stage->show.cameras.empty() ? Orbit{} : Orbit::from(stage->show.cameras.front());
+  std::string status;                 // the last file operation's outcome, one line
+  char pathField[1024] = "";
+  enum class FileAction { None, Open, ImportMvr, SaveAs } pending = FileAction::None, action = FileAction::None;
+  // Swaps in another show (renderers are remade for its venue on the next frame).
+  auto adopt = [&](std::unique_ptr<Stage> next) {
+    stage = std::move(next);
+    list = stage->show.findCueList("");
+    cue = 0;
+    goTime = std::chrono::steady_clock::now();
+    orbit = stage->show.cameras.empty() ? Orbit{} : Orbit::from(stage->show.cameras.front());
+    draft.reset();
+    still.reset();
+    live.reset();  // live input was bound to the old show's patch
+    glfwSetWindowTitle(window, ("haze - " + stage->show.file.filename().string()).c_str());
+  };
   float exposureEv = 0.0f;
   double frameMs = 0.0;
   int frame = 0;
@@ -155,9 +190,9 @@ int runGui(const Args& args) {
     glfwGetFramebufferSize(window, &fbW, &fbH);
     if (fbW <= 0 || fbH <= 0) continue;
     if (!still || fbW != rendererW || fbH != rendererH) {
-      auto d = Renderer::create(*venue, renderSettingsFor(Quality::Draft, fbW, fbH));
+      auto d = Renderer::create(stage->venue, renderSettingsFor(Quality::Draft, fbW, fbH));
       if (!d) { exitCode = fail(d.error().str()); break; }
-      auto s = Renderer::create(*venue, renderSettingsFor(Quality::Default, fbW, fbH));
+      auto s = Renderer::create(stage->venue, renderSettingsFor(Quality::Default, fbW, fbH));
       if (!s) { exitCode = fail(s.error().str()); break; }
       draft = std::move(*d);
       still = std::move(*s);
@@ -188,7 +223,64 @@ int runGui(const Args& args) {
       if (io.MouseWheel != 0.0f) orbit.distanceM = std::clamp(orbit.distanceM * std::pow(0.9f, io.MouseWheel), 0.5f, 200.0f);
     }
 
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    if (ImGui::BeginMainMenuBar()) {
+      if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("Open show...")) pending = FileAction::Open;
+        if (ImGui::MenuItem("Import MVR...")) pending = FileAction::ImportMvr;
+        if (ImGui::MenuItem("Save", "Ctrl+S")) {
+          const Status st = saveShow(stage->show, stage->show.file);
+          status = st ? "saved " + stage->show.file.string() : st.error().str();
+        }
+        if (ImGui::MenuItem("Save as...")) pending = FileAction::SaveAs;
+        ImGui::EndMenu();
+      }
+      if (!status.empty()) ImGui::TextUnformatted(status.c_str());
+      ImGui::EndMainMenuBar();
+    }
+    if (pending != FileAction::None) {
+      ImGui::OpenPopup("File");
+      pathField[0] = '\0';
+    }
+    if (pending != FileAction::None) action = pending;
+    pending = FileAction::None;
+    if (ImGui::BeginPopupModal("File", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+      ImGui::TextUnformatted(action == FileAction::Open ? "Open show (.haze.json):"
+                             : action == FileAction::ImportMvr ? "Import MVR (.mvr); the show is written beside it:"
+                                                               : "Save show as (.haze.json):");
+      ImGui::InputText("##path", pathField, sizeof(pathField));
+      if (ImGui::Button("OK")) {
+        const std::string path = pathField;
+        if (action == FileAction::Open) {
+          auto next = openStage(path);
+          status = next ? "opened " + path : next.error().str();
+          if (next) adopt(std::move(*next));
+        } else if (action == FileAction::ImportMvr) {
+          const std::filesystem::path showFile = std::filesystem::path(path).replace_extension(".haze.json");
+          auto imported = importMvr(path, showFile);
+          if (!imported) {
+            status = imported.error().str();
+          } else {
+            auto next = openStage(showFile.string());
+            status = next ? "imported " + showFile.string() : next.error().str();
+            if (next) adopt(std::move(*next));
+          }
+        } else if (action == FileAction::SaveAs) {
+          const Status st = saveShow(stage->show, path);
+          status = st ? "saved " + path : st.error().str();
+        }
+        ImGui::CloseCurrentPopup();
+      }
+      ImGui::SameLine();
+      if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+      ImGui::EndPopup();
+    }
+    // ImGui 1.86 indexes keys by the backend's (GLFW's) key codes.
+    if (!io.WantCaptureKeyboard && io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) {
+      const Status st = saveShow(stage->show, stage->show.file);
+      status = st ? "saved " + stage->show.file.string() : st.error().str();
+    }
+
+    ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(300, 360), ImGuiCond_FirstUseEver);
     ImGui::Begin("Playback");
     ImGui::Text("%.1f ms per frame, %s", frameMs, stillFrames > 0 ? "refining" : "draft");
@@ -214,7 +306,7 @@ int runGui(const Args& args) {
                     src.priority);
       ImGui::Separator();
     }
-    ImGui::SliderFloat("Haze (1/m)", &show->atmosphere.scattering, 0.0f, 0.2f, "%.3f");
+    ImGui::SliderFloat("Haze (1/m)", &stage->show.atmosphere.scattering, 0.0f, 0.2f, "%.3f");
     ImGui::SliderFloat("Exposure (EV)", &exposureEv, -6.0f, 6.0f, "%.1f");
     ImGui::TextUnformatted("Drag: orbit. Wheel: zoom. Space: GO.");
     ImGui::End();
@@ -223,17 +315,19 @@ int runGui(const Args& args) {
     const auto t0 = std::chrono::steady_clock::now();
     const double sinceGo = std::chrono::duration<double>(t0 - goTime).count();
     // A console on the network drives the rig directly; otherwise the cue list does.
-    StageState state = live ? live->poll(0) : hasList ? stateAt(*show, *profiles, *list, cue, sinceGo) : StageState{};
-    auto frameState = buildFrame(*show, *profiles, state, "");
+    StageState state = live ? live->poll(0)
+                       : hasList ? stateAt(stage->show, stage->profiles, *list, cue, sinceGo)
+                                 : StageState{};
+    auto frameState = buildFrame(stage->show, stage->profiles, state, "");
     if (!frameState) { exitCode = fail(frameState.error().str()); break; }
     frameState->camera.position = orbit.position();
     frameState->camera.target = orbit.target;
     const Cue* current = hasList ? &list->cues[cue] : nullptr;
     const bool fading = live || (current && sinceGo < current->delayS + current->fadeS);
     const bool moved = orbit.position() != lastOrbit.position() || orbit.target != lastOrbit.target ||
-                       show->atmosphere.scattering != lastScattering;
+                       stage->show.atmosphere.scattering != lastScattering;
     lastOrbit = orbit;
-    lastScattering = show->atmosphere.scattering;
+    lastScattering = stage->show.atmosphere.scattering;
     Renderer* r = nullptr;
     if (fading || moved) {
       r = draft.get();
