@@ -210,11 +210,13 @@ int runGui(const Args& args) {
       cue = to;
       goTime = std::chrono::steady_clock::now();
     };
+    // ImGui 1.86's IsKeyPressed takes the backend's key codes: GetKeyIndex maps named keys to them.
+    auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key)); };
     if (!io.WantCaptureKeyboard && hasList) {
-      if ((ImGui::IsKeyPressed(ImGuiKey_Space) || ImGui::IsKeyPressed(ImGuiKey_Enter)) && cue + 1 < list->cues.size())
-        go(cue + 1);
-      if (ImGui::IsKeyPressed(ImGuiKey_Backspace) && cue > 0) go(cue - 1);
+      if ((pressed(ImGuiKey_Space) || pressed(ImGuiKey_Enter)) && cue + 1 < list->cues.size()) go(cue + 1);
+      if (pressed(ImGuiKey_Backspace) && cue > 0) go(cue - 1);
     }
+    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Q)) glfwSetWindowShouldClose(window, GLFW_TRUE);
     if (!io.WantCaptureMouse) {
       if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
         orbit.yawRad -= io.MouseDelta.x * 0.005f;
@@ -232,6 +234,8 @@ int runGui(const Args& args) {
           status = st ? "saved " + stage->show.file.string() : st.error().str();
         }
         if (ImGui::MenuItem("Save as...")) pending = FileAction::SaveAs;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit", "Ctrl+Q")) glfwSetWindowShouldClose(window, GLFW_TRUE);
         ImGui::EndMenu();
       }
       if (!status.empty()) ImGui::TextUnformatted(status.c_str());
@@ -274,7 +278,6 @@ int runGui(const Args& args) {
       if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
       ImGui::EndPopup();
     }
-    // ImGui 1.86 indexes keys by the backend's (GLFW's) key codes.
     if (!io.WantCaptureKeyboard && io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) {
       const Status st = saveShow(stage->show, stage->show.file);
       status = st ? "saved " + stage->show.file.string() : st.error().str();
@@ -283,8 +286,9 @@ int runGui(const Args& args) {
     ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(300, 360), ImGuiCond_FirstUseEver);
     ImGui::Begin("Playback");
-    ImGui::Text("%.1f ms per frame, %s", frameMs, stillFrames > 0 ? "refining" : "draft");
-    if (stillFrames > 0) ImGui::Text("%d frames accumulated", stillFrames);
+    // One line whatever the state, so the controls below never move under the pointer.
+    if (stillFrames > 0) ImGui::Text("%.0f ms per frame, refining: %d frames", frameMs, stillFrames);
+    else ImGui::Text("%.0f ms per frame, draft", frameMs);
     if (hasList) {
       ImGui::Text("List: %s", list->name.c_str());
       if (ImGui::Button("GO") && cue + 1 < list->cues.size()) go(cue + 1);
@@ -308,7 +312,7 @@ int runGui(const Args& args) {
     }
     ImGui::SliderFloat("Haze (1/m)", &stage->show.atmosphere.scattering, 0.0f, 0.2f, "%.3f");
     ImGui::SliderFloat("Exposure (EV)", &exposureEv, -6.0f, 6.0f, "%.1f");
-    ImGui::TextUnformatted("Drag: orbit. Wheel: zoom. Space: GO.");
+    ImGui::TextUnformatted("Drag: orbit. Wheel: zoom. Space/Enter: GO.\nBackspace: BACK. Ctrl+S: save. Ctrl+Q: quit.");
     ImGui::End();
     ImGui::Render();
 
