@@ -5,7 +5,7 @@
 # Coordinates are the default ImGui layout at 640x360 (File menu, Playback window at 10,30).
 set -uo pipefail
 haze=$1; root=$2
-. "$root/tests/gui/xvfb.sh"
+. "$root/tests/gui/xvfb.bash"
 start_xvfb
 for tool in xdotool import compare; do
   command -v $tool >/dev/null || { echo "FAIL: $tool is not installed (make deps installs it)"; exit 1; }

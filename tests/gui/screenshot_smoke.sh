@@ -3,7 +3,7 @@
 # screenshot and exits cleanly; the screenshot shows lit beams, not an empty window.
 set -euo pipefail
 haze=$1; root=$2
-. "$root/tests/gui/xvfb.sh"
+. "$root/tests/gui/xvfb.bash"
 start_xvfb
 out=$(mktemp -d)
 "$haze" open "$root/examples/demo/demo.haze.json" --width 640 --height 360 --screenshot "$out/shot.png" --frames 3
