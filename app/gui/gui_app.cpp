@@ -1,89 +1,60 @@
-// The GUI: a window on one show, drawn by the same renderer as `haze render`. The viewport
-// orbits around a target; cues play with GO / BACK through the pure playback function. Edits
-// of the show (placing, aiming, recording) come in through the command layer (issue 6).
+// The GUI's window and frame loop: a window on one show, drawn by the same renderer as
+// `haze render` into the viewport between the panels (app/gui/gui.h lists them). Draft quality
+// while anything moves (a drag, a fade, an edit), the chosen quality when still, refining
+// progressively. `haze open SHOW --screenshot OUT.png --frames N` draws N frames of the whole
+// window (panels included), writes it and exits.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
-#include <glm/geometric.hpp>
-#include <glm/gtc/constants.hpp>
-
 #include "app/commands.h"
 #include "app/frame_builder.h"
+#include "app/gui/gui.h"
+#include "app/gui/recent_files.h"
 #include "app/render_session.h"
 #include "app/udp_receiver.h"
 #include "app/window_context.h"
 #include "renderer/gl/gl.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/image.h"
-#include "shows/mvr_import.h"
-#include "shows/playback.h"
-#include "shows/show_save.h"
-#include "shows/show.h"
 
 namespace haze {
 namespace {
-
-struct Orbit {
-  glm::vec3 target{0.0f, 2.0f, 0.0f};
-  float distanceM = 15.0f, yawRad = 0.0f, pitchRad = 0.2f;
-
-  static Orbit from(const CameraDef& c) {
-    Orbit o;
-    o.target = c.target;
-    const glm::vec3 d = c.position - c.target;
-    o.distanceM = std::max(glm::length(d), 0.5f);
-    o.yawRad = std::atan2(d.x, d.z);
-    o.pitchRad = std::asin(std::clamp(d.y / o.distanceM, -1.0f, 1.0f));
-    return o;
-  }
-  glm::vec3 position() const {
-    return target + distanceM * glm::vec3(std::cos(pitchRad) * std::sin(yawRad), std::sin(pitchRad),
-                                          std::cos(pitchRad) * std::cos(yawRad));
-  }
-};
 
 struct Options {
   std::string show;
   std::string screenshot;
   int frames = 0;
   int width = 1280, height = 720;
+  std::string cue;  // start with this cue on stage in full ("" = the first cue)
+  std::optional<Quality> quality;
+  std::vector<int> select;
+  bool help = false;
+  bool usage = false;
+  std::string tab;  // the show panel's tab to show first
   bool artNet = false, sacn = false;  // live DMX input from a console drives the fixtures
   std::string bind = "127.0.0.1";
 };
 
+constexpr const char* kUsage =
+    "haze open SHOW [--width W --height H] [--cue N] [--select ID]... [--tab cues|fixtures|library|patch|air]\n"
+    "               [--quality draft|default|high] [--help-window] [--sacn] [--artnet] [--bind ADDR]\n"
+    "               [--screenshot OUT.png [--frames N]]\n"
+    "The designer's GUI on a show (the bundled demo when none is given); docs/gui.md.\n"
+    "--screenshot draws N frames (default 3) of the whole window, writes the last and exits.\n";
+
 int fail(const std::string& line) {
   std::fprintf(stderr, "haze: %s\n", line.c_str());
   return 1;
-}
-
-// Everything the window shows of one show; replaced whole when another show is opened.
-struct Stage {
-  Show show;
-  ProfileSet profiles;
-  Venue venue;
-};
-
-Result<std::unique_ptr<Stage>> openStage(const std::string& file) {
-  auto stage = std::make_unique<Stage>();
-  auto show = loadShow(file);
-  if (!show) return show.error();
-  stage->show = std::move(*show);
-  auto profiles = loadProfiles(stage->show);
-  if (!profiles) return profiles.error();
-  stage->profiles = std::move(*profiles);
-  auto venue = loadVenue(stage->show.resolve(stage->show.venueGltf));
-  if (!venue) return venue.error();
-  stage->venue = std::move(*venue);
-  return stage;
 }
 
 Status saveScreenshot(int width, int height, const std::string& file) {
@@ -99,42 +70,95 @@ Status saveScreenshot(int width, int height, const std::string& file) {
   return writePng8(rgb, width, height, file);
 }
 
-}  // namespace
-
-int runGui(const Args& args) {
+// Parses `haze open` options; an Error names the bad one.
+Result<Options> parseOptions(const Args& args) {
   Options opt;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
+    const bool hasValue = i + 1 < args.size();
     auto intValue = [&](int& dst) {
-      if (i + 1 >= args.size()) return false;
+      if (!hasValue) return false;
       const std::string& s = args[++i];
       return std::from_chars(s.data(), s.data() + s.size(), dst).ec == std::errc() && dst > 0;
     };
-    if (a == "--screenshot" && i + 1 < args.size()) opt.screenshot = args[++i];
+    auto need = [&](const char* what) { return Error{"", a, std::string("needs ") + what}; };
+    if (a == "--screenshot") { if (!hasValue) return need("a file name"); opt.screenshot = args[++i]; }
     else if (a == "--artnet") opt.artNet = true;
     else if (a == "--sacn") opt.sacn = true;
-    else if (a == "--bind" && i + 1 < args.size()) opt.bind = args[++i];
-    else if (a == "--frames") { if (!intValue(opt.frames)) return fail("--frames needs a positive number"); }
-    else if (a == "--width") { if (!intValue(opt.width)) return fail("--width needs a positive number"); }
-    else if (a == "--height") { if (!intValue(opt.height)) return fail("--height needs a positive number"); }
-    else if (!a.empty() && a[0] == '-') return fail("open: unknown option '" + a + "'");
-    else opt.show = a;
+    else if (a == "--help-window") opt.help = true;
+    else if (a == "--help" || a == "-h") opt.usage = true;
+    else if (a == "--bind") { if (!hasValue) return need("an address"); opt.bind = args[++i]; }
+    else if (a == "--tab") { if (!hasValue) return need("cues, fixtures, library, patch or air"); opt.tab = args[++i]; }
+    else if (a == "--cue") { if (!hasValue) return need("a cue number"); opt.cue = args[++i]; }
+    else if (a == "--frames") { if (!intValue(opt.frames)) return need("a positive number"); }
+    else if (a == "--width") { if (!intValue(opt.width)) return need("a positive number"); }
+    else if (a == "--height") { if (!intValue(opt.height)) return need("a positive number"); }
+    else if (a == "--select") {
+      int id = 0;
+      if (!intValue(id)) return need("a fixture id");
+      opt.select.push_back(id);
+    } else if (a == "--quality") {
+      if (!hasValue) return need("draft, default or high");
+      auto q = parseQuality(args[++i]);
+      if (!q) return q.error();
+      opt.quality = *q;
+    } else if (!a.empty() && a[0] == '-') {
+      return Error{"", "open", "unknown option '" + a + "'"};
+    } else {
+      opt.show = a;
+    }
   }
   if (opt.show.empty()) opt.show = HAZE_DEMO_SHOW;
   if (!opt.screenshot.empty() && opt.frames <= 0) opt.frames = 3;
+  return opt;
+}
 
-  auto opened = openStage(opt.show);
+}  // namespace
+
+int runGui(const Args& args) {
+  auto parsed = parseOptions(args);
+  if (!parsed) return fail(parsed.error().str());
+  const Options opt = std::move(*parsed);
+  if (opt.usage) {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
+
+  Gui gui;
+  auto opened = ShowDocument::open(opt.show);
   if (!opened) return fail(opened.error().str());
-  std::unique_ptr<Stage> stage = std::move(*opened);
-  std::unique_ptr<LiveReceiver> live;
+  gui.adopt(std::move(*opened));
+  if (!opt.cue.empty()) {
+    const CueList* list = gui.doc->cueList();
+    auto at = list ? findCue(*list, opt.cue) : Result<size_t>(Error{"", "--cue", "the show has no cue list"});
+    if (!at) return fail(at.error().str());
+    gui.doc->jumpTo(*at, 0.0);
+    gui.cueCursor = *at;
+  }
+  for (int id : opt.select) {
+    if (!gui.doc->show().findFixture(id)) return fail("--select: the show has no fixture " + std::to_string(id));
+    applyClickToSelection(gui.doc->selection, id, false, true);
+  }
+  if (opt.quality) gui.quality = *opt.quality;
+  gui.showHelp = opt.help;
+  if (!opt.tab.empty()) {
+    const std::string names[] = {"Cues", "Fixtures", "Library", "Patch", "Air"};
+    for (const std::string& n : names)
+      if (std::equal(n.begin(), n.end(), opt.tab.begin(), opt.tab.end(),
+                     [](char a, char b) { return std::tolower(a) == std::tolower(b); }))
+        gui.openTab = n;
+    if (gui.openTab.empty()) return fail("--tab: expected cues, fixtures, library, patch or air, not '" + opt.tab + "'");
+  }
+  gui.recent = loadRecentFiles(recentFilesPath());
   if (opt.artNet || opt.sacn) {
     LiveOptions lo;
     lo.udp.bindAddress = opt.bind;
     lo.udp.artNet = opt.artNet;
     lo.udp.sacn = opt.sacn;
-    auto r = LiveReceiver::open(stage->show, stage->profiles, lo);
+    auto r = LiveReceiver::open(gui.doc->show(), gui.doc->profiles(), lo);
     if (!r) return fail(r.error().str());
-    live = std::move(*r);
+    gui.live = std::move(*r);
+    gui.liveBind = opt.bind;
   }
 
 #ifdef NDEBUG
@@ -142,220 +166,134 @@ int runGui(const Args& args) {
 #else
   const bool debugGl = true;  // debug builds always report GL errors (KHR_debug)
 #endif
-  auto ctx = WindowContext::create(opt.width, opt.height, "haze - " + stage->show.file.filename().string(), debugGl);
+  auto ctx = WindowContext::create(opt.width, opt.height, gui.doc->title(), debugGl);
   if (!ctx) return fail(ctx.error().str());
-  GLFWwindow* window = (*ctx)->window();
+  gui.window = (*ctx)->window();
+  std::string title = gui.doc->title();
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // the layout is ours, not a file in the working folder
   ImGui::StyleColorsDark();
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui::GetStyle().WindowRounding = 0.0f;
+  // Installed before ImGui's callbacks, which call it after their own.
+  glfwSetWindowUserPointer(gui.window, &gui);
+  glfwSetKeyCallback(gui.window, [](GLFWwindow* w, int key, int, int action, int mods) {
+    if (action == GLFW_PRESS) static_cast<Gui*>(glfwGetWindowUserPointer(w))->keys.push_back({key, mods});
+  });
+  ImGui_ImplGlfw_InitForOpenGL(gui.window, true);
   ImGui_ImplOpenGL3_Init("#version 450");
 
-  // Two renderers on one window: draft while anything moves (a drag, a fade), so the view keeps
-  // up; default when still, refining progressively (more jittered frames each redraw).
+  // Two renderers: draft while anything moves, the chosen quality when still.
   std::unique_ptr<Renderer> draft, still;
   int rendererW = 0, rendererH = 0;
-  int stillFrames = 0;
+  Quality rendererQuality = gui.quality;
+  const ShowDocument* rendererDoc = nullptr;
   Orbit lastOrbit{};
-  float lastScattering = -1.0f;
-  const CueList* list = stage->show.findCueList("");
-  size_t cue = 0;
-  auto goTime = std::chrono::steady_clock::now();
-  Orbit orbit = stage->show.cameras.empty() ? Orbit{} : Orbit::from(stage->show.cameras.front());
-  std::string status;                 // the last file operation's outcome, one line
-  char pathField[1024] = "";
-  enum class FileAction { None, Open, ImportMvr, SaveAs } pending = FileAction::None, action = FileAction::None;
-  // Swaps in another show (renderers are remade for its venue on the next frame).
-  auto adopt = [&](std::unique_ptr<Stage> next) {
-    stage = std::move(next);
-    list = stage->show.findCueList("");
-    cue = 0;
-    goTime = std::chrono::steady_clock::now();
-    orbit = stage->show.cameras.empty() ? Orbit{} : Orbit::from(stage->show.cameras.front());
-    draft.reset();
-    still.reset();
-    live.reset();  // live input was bound to the old show's patch
-    glfwSetWindowTitle(window, ("haze - " + stage->show.file.filename().string()).c_str());
-  };
-  float exposureEv = 0.0f;
-  double frameMs = 0.0;
+  float lastFov = 0.0f;
+  std::uint64_t lastRevision = 0;
+  const auto start = std::chrono::steady_clock::now();
   int frame = 0;
   int exitCode = 0;
 
-  while (!glfwWindowShouldClose(window)) {
-    glfwPollEvents();
-    int fbW = 0, fbH = 0;
-    glfwGetFramebufferSize(window, &fbW, &fbH);
-    if (fbW <= 0 || fbH <= 0) continue;
-    if (!still || fbW != rendererW || fbH != rendererH) {
-      auto d = Renderer::create(stage->venue, renderSettingsFor(Quality::Draft, fbW, fbH));
-      if (!d) { exitCode = fail(d.error().str()); break; }
-      auto s = Renderer::create(stage->venue, renderSettingsFor(Quality::Default, fbW, fbH));
-      if (!s) { exitCode = fail(s.error().str()); break; }
-      draft = std::move(*d);
-      still = std::move(*s);
-      rendererW = fbW;
-      rendererH = fbH;
-      stillFrames = 0;
+  // Refinement stops after this many still frames; the window then sleeps until an event (or a
+  // tenth of a second, so that follows and fades started by the clock still run).
+  constexpr int kMaxStillFrames = 64;
+  bool settled = false;
+  while (true) {
+    if (settled) glfwWaitEventsTimeout(0.1);
+    else glfwPollEvents();
+    if (glfwWindowShouldClose(gui.window) && (gui.quitConfirmed || !gui.doc->modified() || opt.frames > 0)) break;
+    int fbW = 0, fbH = 0, winW = 0, winH = 0;
+    glfwGetFramebufferSize(gui.window, &fbW, &fbH);
+    glfwGetWindowSize(gui.window, &winW, &winH);
+    if (fbW <= 0 || fbH <= 0 || winW <= 0 || winH <= 0) {
+      glfwWaitEventsTimeout(0.1);
+      continue;
     }
+    gui.nowS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    ImGuiIO& io = ImGui::GetIO();
-    const bool hasList = list && !list->cues.empty();
-    auto go = [&](size_t to) {
-      cue = to;
-      goTime = std::chrono::steady_clock::now();
-    };
-    // ImGui 1.86's IsKeyPressed takes the backend's key codes: GetKeyIndex maps named keys to them.
-    auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key)); };
-    if (!io.WantCaptureKeyboard && hasList) {
-      if ((pressed(ImGuiKey_Space) || pressed(ImGuiKey_Enter)) && cue + 1 < list->cues.size()) go(cue + 1);
-      if (pressed(ImGuiKey_Backspace) && cue > 0) go(cue - 1);
-    }
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Q)) glfwSetWindowShouldClose(window, GLFW_TRUE);
-    if (!io.WantCaptureMouse) {
-      if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
-        orbit.yawRad -= io.MouseDelta.x * 0.005f;
-        orbit.pitchRad = std::clamp(orbit.pitchRad + io.MouseDelta.y * 0.005f, -1.5f, 1.5f);
-      }
-      if (io.MouseWheel != 0.0f) orbit.distanceM = std::clamp(orbit.distanceM * std::pow(0.9f, io.MouseWheel), 0.5f, 200.0f);
-    }
+    if (!ImGui::IsAnyItemActive()) gui.mergeItem = 0;  // the next widget edit starts a new undo step
+    gui.layout = layoutFor(static_cast<float>(winW), static_cast<float>(winH), ImGui::GetFrameHeight());
+    gui.stage = gui.live ? gui.live->poll(0) : gui.doc->stageState(gui.nowS);
 
-    if (ImGui::BeginMainMenuBar()) {
-      if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("Open show...")) pending = FileAction::Open;
-        if (ImGui::MenuItem("Import MVR...")) pending = FileAction::ImportMvr;
-        if (ImGui::MenuItem("Save", "Ctrl+S")) {
-          const Status st = saveShow(stage->show, stage->show.file);
-          status = st ? "saved " + stage->show.file.string() : st.error().str();
-        }
-        if (ImGui::MenuItem("Save as...")) pending = FileAction::SaveAs;
-        ImGui::Separator();
-        if (ImGui::MenuItem("Quit", "Ctrl+Q")) glfwSetWindowShouldClose(window, GLFW_TRUE);
-        ImGui::EndMenu();
-      }
-      if (!status.empty()) ImGui::TextUnformatted(status.c_str());
-      ImGui::EndMainMenuBar();
-    }
-    if (pending != FileAction::None) {
-      ImGui::OpenPopup("File");
-      pathField[0] = '\0';
-    }
-    if (pending != FileAction::None) action = pending;
-    pending = FileAction::None;
-    if (ImGui::BeginPopupModal("File", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-      ImGui::TextUnformatted(action == FileAction::Open ? "Open show (.haze.json):"
-                             : action == FileAction::ImportMvr ? "Import MVR (.mvr); the show is written beside it:"
-                                                               : "Save show as (.haze.json):");
-      ImGui::InputText("##path", pathField, sizeof(pathField));
-      if (ImGui::Button("OK")) {
-        const std::string path = pathField;
-        if (action == FileAction::Open) {
-          auto next = openStage(path);
-          status = next ? "opened " + path : next.error().str();
-          if (next) adopt(std::move(*next));
-        } else if (action == FileAction::ImportMvr) {
-          const std::filesystem::path showFile = std::filesystem::path(path).replace_extension(".haze.json");
-          auto imported = importMvr(path, showFile);
-          if (!imported) {
-            status = imported.error().str();
-          } else {
-            auto next = openStage(showFile.string());
-            status = next ? "imported " + showFile.string() : next.error().str();
-            if (next) adopt(std::move(*next));
-          }
-        } else if (action == FileAction::SaveAs) {
-          const Status st = saveShow(stage->show, path);
-          status = st ? "saved " + path : st.error().str();
-        }
-        ImGui::CloseCurrentPopup();
-      }
-      ImGui::SameLine();
-      if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-      ImGui::EndPopup();
-    }
-    if (!io.WantCaptureKeyboard && io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) {
-      const Status st = saveShow(stage->show, stage->show.file);
-      status = st ? "saved " + stage->show.file.string() : st.error().str();
-    }
-
-    ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(300, 360), ImGuiCond_FirstUseEver);
-    ImGui::Begin("Playback");
-    // One line whatever the state, so the controls below never move under the pointer.
-    if (stillFrames > 0) ImGui::Text("%.0f ms per frame, refining: %d frames", frameMs, stillFrames);
-    else ImGui::Text("%.0f ms per frame, draft", frameMs);
-    if (hasList) {
-      ImGui::Text("List: %s", list->name.c_str());
-      if (ImGui::Button("GO") && cue + 1 < list->cues.size()) go(cue + 1);
-      ImGui::SameLine();
-      if (ImGui::Button("BACK") && cue > 0) go(cue - 1);
-      for (size_t i = 0; i < list->cues.size(); ++i) {
-        const Cue& c = list->cues[i];
-        const std::string label = c.number + "  " + c.label;
-        if (ImGui::Selectable(label.c_str(), i == cue)) go(i);
-      }
-    }
-    if (live) {
-      ImGui::Separator();
-      ImGui::Text("Live DMX on %s: %.0f packets/s", opt.bind.c_str(), live->packetRate());
-      const auto sources = live->sources();
-      if (sources.empty()) ImGui::TextUnformatted("no source: holding the last levels");
-      for (const DmxSourceInfo& src : sources)
-        ImGui::Text("%s %s  universe %d  priority %d", src.winning ? "*" : " ", src.name.c_str(), src.universe,
-                    src.priority);
-      ImGui::Separator();
-    }
-    ImGui::SliderFloat("Haze (1/m)", &stage->show.atmosphere.scattering, 0.0f, 0.2f, "%.3f");
-    ImGui::SliderFloat("Exposure (EV)", &exposureEv, -6.0f, 6.0f, "%.1f");
-    ImGui::TextUnformatted("Drag: orbit. Wheel: zoom. Space/Enter: GO.\nBackspace: BACK. Ctrl+S: save. Ctrl+Q: quit.");
-    ImGui::End();
+    handleShortcuts(gui);
+    drawMenuBar(gui);
+    drawShowPanel(gui);
+    drawInspector(gui);
+    drawHelp(gui);
+    drawFileDialogs(gui);
+    handleViewport(gui);
     ImGui::Render();
 
+    // The viewport in framebuffer pixels (GL counts rows from the bottom).
+    const float sx = static_cast<float>(fbW) / winW, sy = static_cast<float>(fbH) / winH;
+    const Rect& vp = gui.layout.viewport;
+    const int vx = static_cast<int>(vp.x * sx), vw = std::max(static_cast<int>(vp.w * sx), 1);
+    const int vh = std::max(static_cast<int>(vp.h * sy), 1), vy = fbH - static_cast<int>((vp.y + vp.h) * sy);
+    if (!still || vw != rendererW || vh != rendererH || gui.quality != rendererQuality || rendererDoc != gui.doc.get()) {
+      // A new document may have a new venue: the renderers are made for one venue.
+      auto d = Renderer::create(gui.doc->venue(), renderSettingsFor(Quality::Draft, vw, vh));
+      if (!d) { exitCode = fail(d.error().str()); break; }
+      auto s = Renderer::create(gui.doc->venue(), renderSettingsFor(gui.quality, vw, vh));
+      if (!s) { exitCode = fail(s.error().str()); break; }
+      draft = std::move(*d);
+      still = std::move(*s);
+      rendererW = vw;
+      rendererH = vh;
+      rendererQuality = gui.quality;
+      rendererDoc = gui.doc.get();
+      gui.stillFrames = 0;
+    }
+
     const auto t0 = std::chrono::steady_clock::now();
-    const double sinceGo = std::chrono::duration<double>(t0 - goTime).count();
-    // A console on the network drives the rig directly; otherwise the cue list does.
-    StageState state = live ? live->poll(0)
-                       : hasList ? stateAt(stage->show, stage->profiles, *list, cue, sinceGo)
-                                 : StageState{};
-    auto frameState = buildFrame(stage->show, stage->profiles, state, "");
+    // Edits made this frame show this frame.
+    if (!gui.live && gui.doc->revision() != lastRevision) gui.stage = gui.doc->stageState(gui.nowS);
+    auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "");
     if (!frameState) { exitCode = fail(frameState.error().str()); break; }
-    frameState->camera.position = orbit.position();
-    frameState->camera.target = orbit.target;
-    const Cue* current = hasList ? &list->cues[cue] : nullptr;
-    const bool fading = live || (current && sinceGo < current->delayS + current->fadeS);
-    const bool moved = orbit.position() != lastOrbit.position() || orbit.target != lastOrbit.target ||
-                       stage->show.atmosphere.scattering != lastScattering;
-    lastOrbit = orbit;
-    lastScattering = stage->show.atmosphere.scattering;
+    frameState->camera = gui.cameraState();
+    const bool changing = gui.live || gui.doc->fading(gui.nowS) || !(gui.orbit == lastOrbit) ||
+                          gui.fovYDeg != lastFov || gui.doc->revision() != lastRevision;
+    lastOrbit = gui.orbit;
+    lastFov = gui.fovYDeg;
+    lastRevision = gui.doc->revision();
+    glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
     Renderer* r = nullptr;
-    if (fading || moved) {
+    settled = !changing && gui.stillFrames >= kMaxStillFrames;
+    if (changing) {
       r = draft.get();
       r->render(*frameState);
-      stillFrames = 0;
+      gui.stillFrames = 0;
     } else {
       r = still.get();
-      r->render(*frameState, stillFrames > 0);  // keep adding jittered frames while still
-      ++stillFrames;
+      if (!settled) {
+        r->render(*frameState, gui.stillFrames > 0);  // keep adding jittered frames while still
+        ++gui.stillFrames;
+      }
     }
-    r->drawDisplay({.exposureEv = exposureEv}, 0, 0, 0, fbW, fbH);
+    r->drawDisplay({.exposureEv = gui.exposureEv}, 0, vx, vy, vw, vh);
+    glViewport(0, 0, fbW, fbH);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (!settled) gui.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
+    if (gui.doc->title() != title) {
+      title = gui.doc->title();
+      glfwSetWindowTitle(gui.window, title.c_str());
+    }
     ++frame;
     if (opt.frames > 0 && frame >= opt.frames) {
       if (!opt.screenshot.empty()) {
         const Status s = saveScreenshot(fbW, fbH, opt.screenshot);
         if (!s) exitCode = fail(s.error().str());
       }
-      glfwSwapBuffers(window);
+      glfwSwapBuffers(gui.window);
       break;
     }
-    glfwSwapBuffers(window);
+    glfwSwapBuffers(gui.window);
   }
 
   ImGui_ImplOpenGL3_Shutdown();

@@ -1,0 +1,147 @@
+// What the GUI's panels share: the open document, the view (orbit camera, tool, quality), the
+// file dialogs' state and the status line; and one function per panel, each in its own file:
+//   gui_app.cpp         the window, the frame loop, options (--screenshot, --frames, --cue...)
+//   gui_layout.cpp      where the panels and the viewport go for a window size
+//   gui_menus.cpp       menu bar (File, Edit, View, Help, tools) and keyboard shortcuts
+//   gui_files.cpp       open, new, save, save as, recent files, import MVR, the unsaved guard
+//   gui_viewport.cpp    orbit/pan/zoom, cameras, clicks (select, place, focus), drags, overlay
+//   gui_cues.cpp        cue list, transport (GO, BACK, GOTO, fade progress), cue editing
+//   gui_fixtures.cpp    the fixture list (selection)
+//   gui_library.cpp     the show's profiles, adding files from disk, placing
+//   gui_patch.cpp       the patch table with conflicts
+//   gui_atmosphere.cpp  atmosphere, render quality, exposure
+//   gui_inspector.cpp   the selection: transform, pan/tilt, focus, attributes
+//   gui_help.cpp        the shortcuts window (F1)
+// Panels draw with ImGui and change the show only through ShowDocument (commands, undo).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+#include <imgui_internal.h>  // GetItemID: which widget an edit came from (undo merging)
+
+#include "app/gui/show_document.h"
+#include "app/render_job.h"
+#include "renderer/scene/frame_state.h"
+
+struct GLFWwindow;
+
+namespace haze {
+
+class LiveReceiver;
+
+struct Orbit {
+  glm::vec3 target{0.0f, 2.0f, 0.0f};
+  float distanceM = 15.0f, yawRad = 0.0f, pitchRad = 0.2f;
+  static Orbit from(const CameraDef& c);
+  glm::vec3 position() const;
+  bool operator==(const Orbit&) const = default;
+};
+
+enum class Tool { Select, Place, Focus };
+enum class FileAction { None, New, Open, OpenPath, SaveAs, AddProfile, ImportMvr, Quit };
+
+struct Rect {
+  float x = 0, y = 0, w = 0, h = 0;
+  bool contains(ImVec2 p) const { return p.x >= x && p.y >= y && p.x < x + w && p.y < y + h; }
+};
+
+struct Layout {
+  float menuH = 0;
+  Rect left, right, viewport;  // window coordinates, pixel (0, 0) at the top left
+};
+Layout layoutFor(float widthPx, float heightPx, float menuHeightPx);
+
+struct Gui {
+  GLFWwindow* window = nullptr;
+  std::unique_ptr<ShowDocument> doc;
+  std::unique_ptr<LiveReceiver> live;  // DMX from a console drives the rig instead of the cues
+  std::string liveBind;
+  Layout layout;
+  double nowS = 0.0;
+  StageState stage;  // what is on stage this frame (playback + programmer, or live)
+
+  // View.
+  Orbit orbit;
+  float fovYDeg = 40.0f;
+  int camera = -1;  // index of the show camera last chosen (-1: none)
+  Tool tool = Tool::Select;
+  std::string placeProfile;  // the library's selection
+  Quality quality = Quality::Default;
+  float exposureEv = 0.0f;
+  double frameMs = 0.0;
+  int stillFrames = 0;
+  bool showHelp = false;
+  std::string openTab;  // a tab of the show panel to bring to the front once ("Patch"...)
+
+  // Cues panel: the cue picked for editing (not the one on stage).
+  std::optional<size_t> cueCursor;
+
+  // Files.
+  std::vector<std::string> recent;
+  FileAction pathAction = FileAction::None;  // the path popup asks for this
+  bool openPathPopup = false;
+  char pathField[1024] = "";
+  FileAction guarded = FileAction::None;     // waits for the unsaved-changes answer
+  std::string guardedPath;
+  bool openGuardPopup = false;
+  bool quitConfirmed = false;
+
+  // Key presses since the last frame, from GLFW's key callback. ImGui 1.86 keeps only whether a
+  // key is down at each frame, so a tap shorter than a frame (a slow frame while refining, or
+  // xdotool's instant taps) would be lost; shortcuts read this queue instead.
+  struct KeyPress {
+    int key = 0;   // GLFW_KEY_*
+    int mods = 0;  // GLFW_MOD_*
+  };
+  std::vector<KeyPress> keys;
+
+  // The status line: the last action's outcome.
+  std::string status;
+  bool statusError = false;
+  void say(std::string line, bool error = false) {
+    status = std::move(line);
+    statusError = error;
+  }
+  void report(const Status& s, const std::string& done) {
+    if (s) say(done);
+    else say(s.error().str(), true);
+  }
+
+  // Widget edits that merge into one undo step while the same widget stays active (a drag).
+  ImGuiID mergeItem = 0;
+  bool mergeFor(ImGuiID item) {
+    const bool merge = mergeItem == item;
+    mergeItem = item;
+    return merge;
+  }
+
+  // Swaps in another show (or a new one): the view goes to its first camera.
+  void adopt(std::unique_ptr<ShowDocument> next);
+  CameraState cameraState() const;
+};
+
+// Panels and handlers, in the order the frame loop calls them.
+void handleShortcuts(Gui& gui);
+void drawMenuBar(Gui& gui);
+void drawShowPanel(Gui& gui);  // the left panel's tabs
+void drawCuesTab(Gui& gui);
+void drawFixturesTab(Gui& gui);
+void drawLibraryTab(Gui& gui);
+void drawPatchTab(Gui& gui);
+void drawAtmosphereTab(Gui& gui);
+void drawInspector(Gui& gui);
+void drawHelp(Gui& gui);
+void drawFileDialogs(Gui& gui);
+void handleViewport(Gui& gui);  // mouse in the viewport, then the overlay
+
+// File actions that the menus, shortcuts and the guard share (gui_files.cpp).
+void requestFileAction(Gui& gui, FileAction action, std::string path = "");
+void saveCurrent(Gui& gui);
+void recordCueFromProgrammer(Gui& gui);  // gui_cues.cpp
+void updateCursorCue(Gui& gui);          // gui_cues.cpp
+
+}  // namespace haze

@@ -1,0 +1,70 @@
+// The atmosphere tab: scattering, absorption, phase function (and g for Henyey-Greenstein),
+// ambient light (physics.md), each a setAtmosphere command (a drag is one undo step); and the
+// view's render quality and exposure, which are not part of the show.
+#include "app/gui/gui.h"
+#include "app/udp_receiver.h"
+
+namespace haze {
+
+void drawAtmosphereTab(Gui& gui) {
+  ShowDocument& doc = *gui.doc;
+  AtmosphereDef a = doc.show().atmosphere;
+  bool changed = false;
+  ImGuiID item = 0;
+  auto track = [&](bool c) {
+    if (c) {
+      changed = true;
+      item = ImGui::GetItemID();
+    }
+  };
+  ImGui::TextUnformatted("Atmosphere");
+  ImGui::SetNextItemWidth(110);
+  track(ImGui::DragFloat("Scattering 1/m", &a.scattering, 0.0005f, 0.0f, 1.0f, "%.4f"));
+  ImGui::SetNextItemWidth(110);
+  track(ImGui::DragFloat("Absorption 1/m", &a.absorption, 0.0005f, 0.0f, 1.0f, "%.4f"));
+  ImGui::SetNextItemWidth(110);
+  if (ImGui::BeginCombo("Phase", a.phase.c_str())) {
+    for (const char* p : {"hazy", "isotropic", "hg"})
+      if (ImGui::Selectable(p, a.phase == p)) {
+        a.phase = p;
+        changed = true;
+        item = ImGui::GetItemID();
+      }
+    ImGui::EndCombo();
+  }
+  if (a.phase == "hg") {
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::SliderFloat("g", &a.g, -0.95f, 0.95f, "%.2f"));
+  }
+  ImGui::SetNextItemWidth(160);
+  track(ImGui::DragFloat3("Ambient", &a.ambient.x, 0.005f, 0.0f, 10.0f, "%.2f"));
+  if (changed) {
+    a.scattering = std::max(a.scattering, 0.0f);
+    a.absorption = std::max(a.absorption, 0.0f);
+    Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
+    if (!s) gui.say(s.error().str(), true);
+  }
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("View (not saved in the show)");
+  const char* names[] = {"Draft", "Default", "High"};
+  int q = std::min(static_cast<int>(gui.quality), 2);
+  ImGui::SetNextItemWidth(110);
+  if (ImGui::Combo("Quality", &q, names, 3)) gui.quality = static_cast<Quality>(q);
+  ImGui::SetNextItemWidth(110);
+  ImGui::SliderFloat("Exposure EV", &gui.exposureEv, -6.0f, 6.0f, "%.1f");
+  ImGui::TextWrapped("While the view or the stage moves it draws at draft quality; when still it refines "
+                     "(%d frames so far).", gui.stillFrames);
+
+  if (gui.live) {
+    ImGui::Separator();
+    ImGui::Text("Live DMX on %s: %.0f packets/s", gui.liveBind.c_str(), gui.live->packetRate());
+    const auto sources = gui.live->sources();
+    if (sources.empty()) ImGui::TextUnformatted("no source: holding the last levels");
+    for (const DmxSourceInfo& src : sources)
+      ImGui::Text("%s %s  universe %d  priority %d", src.winning ? "*" : " ", src.name.c_str(), src.universe,
+                  src.priority);
+  }
+}
+
+}  // namespace haze

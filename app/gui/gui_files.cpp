@@ -1,0 +1,202 @@
+// Files: new, open (by path, or from the recent list), import MVR, save, save as, adding profile
+// files to the library, and the unsaved-changes guard in front of everything that would drop
+// the open show (new, open, quit, closing the window). Paths are typed into a popup (there is
+// no file browser): it starts in the show's folder.
+#include <GLFW/glfw3.h>
+
+#include <cstring>
+
+#include "app/gui/gui.h"
+#include "app/gui/recent_files.h"
+#include "app/udp_receiver.h"
+#include "shows/mvr_import.h"
+
+namespace haze {
+
+namespace fs = std::filesystem;
+
+void Gui::adopt(std::unique_ptr<ShowDocument> next) {
+  doc = std::move(next);
+  live.reset();  // live input was bound to the old show's patch
+  camera = doc->show().cameras.empty() ? -1 : 0;
+  orbit = doc->show().cameras.empty() ? Orbit{} : Orbit::from(doc->show().cameras.front());
+  fovYDeg = doc->show().cameras.empty() ? 40.0f : doc->show().cameras.front().fovYDeg;
+  tool = Tool::Select;
+  cueCursor.reset();
+  placeProfile = doc->profiles().empty() ? "" : doc->profiles().begin()->first;
+  if (doc->cueList() && !doc->cueList()->cues.empty()) doc->jumpTo(0, nowS);
+}
+
+namespace {
+
+void remember(Gui& gui, const fs::path& file) {
+  gui.recent = withRecentFile(gui.recent, file);
+  if (Status s = saveRecentFiles(recentFilesPath(), gui.recent); !s)
+    gui.say("recent files not kept: " + s.error().str(), true);
+}
+
+void openPath(Gui& gui, const std::string& path) {
+  auto next = ShowDocument::open(path);
+  if (!next) {
+    gui.say(next.error().str(), true);
+    return;
+  }
+  gui.adopt(std::move(*next));
+  gui.say("opened " + path);
+  remember(gui, path);
+}
+
+std::string folderOf(const Gui& gui) {
+  if (gui.doc->untitled()) return fs::current_path().string() + "/";
+  return gui.doc->show().file.parent_path().string() + "/";
+}
+
+void askPath(Gui& gui, FileAction action) {
+  gui.pathAction = action;
+  gui.openPathPopup = true;
+  std::string start = folderOf(gui);
+  if (action == FileAction::SaveAs && !gui.doc->untitled()) start = gui.doc->show().file.string();
+  std::snprintf(gui.pathField, sizeof(gui.pathField), "%s", start.c_str());
+}
+
+// Does what was asked, the guard having been passed.
+void perform(Gui& gui, FileAction action, const std::string& path) {
+  switch (action) {
+    case FileAction::New: {
+      auto next = ShowDocument::blank(gui.doc.get());
+      if (!next) {
+        gui.say(next.error().str(), true);
+        return;
+      }
+      gui.adopt(std::move(*next));
+      gui.say("new show on the same venue: add profiles in the Library tab, then place fixtures");
+      return;
+    }
+    case FileAction::OpenPath: openPath(gui, path); return;
+    case FileAction::Quit:
+      gui.quitConfirmed = true;
+      glfwSetWindowShouldClose(gui.window, GLFW_TRUE);
+      return;
+    case FileAction::Open:
+    case FileAction::ImportMvr:
+    case FileAction::SaveAs:
+    case FileAction::AddProfile: askPath(gui, action); return;
+    case FileAction::None: return;
+  }
+}
+
+bool dropsTheShow(FileAction a) {
+  return a == FileAction::New || a == FileAction::Open || a == FileAction::OpenPath || a == FileAction::ImportMvr ||
+         a == FileAction::Quit;
+}
+
+// The path popup's OK.
+void finishPath(Gui& gui, const std::string& path) {
+  switch (gui.pathAction) {
+    case FileAction::Open: openPath(gui, path); break;
+    case FileAction::SaveAs: {
+      Status s = gui.doc->save(path);
+      gui.report(s, "saved " + path);
+      if (s) remember(gui, path);
+      break;
+    }
+    case FileAction::AddProfile: {
+      auto key = gui.doc->addProfileFile(path);
+      if (!key) {
+        gui.say(key.error().str(), true);
+        break;
+      }
+      gui.placeProfile = *key;
+      gui.say("added profile '" + *key + "': press P (or Place) and click a surface");
+      break;
+    }
+    case FileAction::ImportMvr: {
+      const fs::path showFile = fs::path(path).replace_extension(".haze.json");
+      auto imported = importMvr(path, showFile);
+      if (!imported) gui.say(imported.error().str(), true);
+      else openPath(gui, showFile.string());
+      break;
+    }
+    default: break;
+  }
+}
+
+}  // namespace
+
+void requestFileAction(Gui& gui, FileAction action, std::string path) {
+  if (dropsTheShow(action) && gui.doc->modified()) {
+    gui.guarded = action;
+    gui.guardedPath = std::move(path);
+    gui.openGuardPopup = true;
+    return;
+  }
+  perform(gui, action, path);
+}
+
+void saveCurrent(Gui& gui) {
+  if (gui.doc->untitled()) {
+    askPath(gui, FileAction::SaveAs);
+    return;
+  }
+  const std::string file = gui.doc->show().file.string();
+  Status s = gui.doc->save();
+  gui.report(s, "saved " + file);
+  if (s) remember(gui, file);
+}
+
+void drawFileDialogs(Gui& gui) {
+  // The window's close button goes through the guard like Quit does.
+  if (glfwWindowShouldClose(gui.window) && !gui.quitConfirmed && gui.doc->modified()) {
+    glfwSetWindowShouldClose(gui.window, GLFW_FALSE);
+    requestFileAction(gui, FileAction::Quit);
+  }
+  if (gui.openGuardPopup) {
+    ImGui::OpenPopup("Unsaved changes");
+    gui.openGuardPopup = false;
+  }
+  if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("%s has unsaved changes.", gui.doc->untitled() ? "The new show" : gui.doc->show().file.filename().c_str());
+    if (ImGui::Button("Save")) {
+      ImGui::CloseCurrentPopup();
+      if (gui.doc->untitled()) {
+        askPath(gui, FileAction::SaveAs);
+        gui.say("save the new show first, then do it again");
+      } else {
+        saveCurrent(gui);
+        if (!gui.doc->modified()) perform(gui, gui.guarded, gui.guardedPath);
+      }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard changes")) {
+      ImGui::CloseCurrentPopup();
+      perform(gui, gui.guarded, gui.guardedPath);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+
+  if (gui.openPathPopup) {
+    ImGui::OpenPopup("Path");
+    gui.openPathPopup = false;
+  }
+  if (ImGui::BeginPopupModal("Path", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    const char* ask = gui.pathAction == FileAction::Open        ? "Open show (.haze.json):"
+                      : gui.pathAction == FileAction::SaveAs     ? "Save show as (.haze.json):"
+                      : gui.pathAction == FileAction::AddProfile ? "Add a profile file (.json, .ies, .ldt, .gdtf):"
+                                                                 : "Import MVR (.mvr); the show is written beside it:";
+    ImGui::TextUnformatted(ask);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(std::max(gui.layout.viewport.w, 420.0f));
+    const bool enter = ImGui::InputText("##path", gui.pathField, sizeof(gui.pathField), ImGuiInputTextFlags_EnterReturnsTrue);
+    if (ImGui::Button("OK") || enter) {
+      ImGui::CloseCurrentPopup();
+      finishPath(gui, gui.pathField);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+}
+
+}  // namespace haze

@@ -1,0 +1,149 @@
+// The inspector for the selection (one or many fixtures): name, position and mounting rotation
+// (one fixture), pan and tilt with focus to point, and the attributes: intensity, colour (picker
+// and the profile's colour wheel), zoom, gobo, gobo rotation, iris. Shown values are the first
+// selected fixture's on stage; a change sets that attribute of every selected fixture in the
+// programmer (a drag is one undo step). "*" marks attributes the programmer holds.
+#include <cstdio>
+
+#include "app/gui/gui.h"
+
+namespace haze {
+
+namespace {
+
+const char* mark(const CueValues* p, bool held) { return p && held ? "*" : " "; }
+
+}  // namespace
+
+void drawInspector(Gui& gui) {
+  const Rect& r = gui.layout.right;
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
+  ImGui::SetNextWindowSize(ImVec2(r.w, r.h));
+  ImGui::Begin("Inspector", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ShowDocument& doc = *gui.doc;
+  if (doc.selection.empty()) {
+    ImGui::TextWrapped("Nothing selected. Click a fixture (or its beam) in the view, or pick fixtures in the "
+                       "Fixtures tab; Ctrl toggles, Shift adds.");
+    ImGui::Separator();
+    ImGui::Text("Programmer: %zu fixture(s)", doc.programmer().values.size());
+    ImGui::End();
+    return;
+  }
+  const int id = doc.selection.front();
+  const FixtureDef* f = doc.show().findFixture(id);
+  const auto prof = f ? doc.profiles().find(f->profile) : doc.profiles().end();
+  if (!f || prof == doc.profiles().end() || !prof->second) {
+    ImGui::TextUnformatted("The selected fixture has no loaded profile.");
+    ImGui::End();
+    return;
+  }
+  const Profile& p = *prof->second;
+  const bool single = doc.selection.size() == 1;
+  if (single) ImGui::Text("%d  %s", f->id, f->name.c_str());
+  else ImGui::Text("%zu fixtures (first: %d %s)", doc.selection.size(), f->id, f->name.c_str());
+  ImGui::TextDisabled("%s", p.name.c_str());
+
+  if (single) {
+    static char nameField[128];
+    static int nameFor = 0;
+    if (nameFor != id || !ImGui::IsAnyItemActive()) {
+      std::snprintf(nameField, sizeof(nameField), "%s", f->name.c_str());
+      nameFor = id;
+    }
+    ImGui::InputText("Name", nameField, sizeof(nameField));
+    if (ImGui::IsItemDeactivatedAfterEdit() && f->name != nameField)
+      gui.report(doc.run(renameFixture(id, nameField)), "renamed fixture " + std::to_string(id));
+    glm::vec3 pos = f->position, rot = f->rotationDeg;
+    if (ImGui::DragFloat3("Pos m", &pos.x, 0.01f, -1000.0f, 1000.0f, "%.2f")) {
+      Status s = doc.run(moveFixture(id, pos), gui.mergeFor(ImGui::GetItemID()));
+      if (!s) gui.say(s.error().str(), true);
+    }
+    if (ImGui::DragFloat3("Rot deg", &rot.x, 0.5f, -360.0f, 360.0f, "%.1f")) {
+      Status s = doc.run(rotateFixture(id, rot), gui.mergeFor(ImGui::GetItemID()));
+      if (!s) gui.say(s.error().str(), true);
+    }
+    f = doc.show().findFixture(id);  // the commands above may have moved the vector
+    if (!f) {
+      ImGui::End();
+      return;
+    }
+  }
+
+  const auto st = gui.stage.find(id);
+  Attributes a = st != gui.stage.end() ? st->second : Attributes{};
+  const auto progIt = doc.programmer().values.find(id);
+  const CueValues* prog = progIt != doc.programmer().values.end() ? &progIt->second : nullptr;
+  CueValues set;
+  ImGuiID item = 0;
+  auto track = [&](bool changed) {
+    if (changed) item = ImGui::GetItemID();
+    return changed;
+  };
+
+  ImGui::Separator();
+  ImGui::Text("Aim%s", mark(prog, prog && (prog->panDeg || prog->tiltDeg)));
+  if (track(ImGui::DragFloat("Pan", &a.panDeg, 0.25f, p.panDeg.min, p.panDeg.max, "%.1f deg"))) set.panDeg = a.panDeg;
+  if (track(ImGui::DragFloat("Tilt", &a.tiltDeg, 0.25f, p.tiltDeg.min, p.tiltDeg.max, "%.1f deg"))) set.tiltDeg = a.tiltDeg;
+  if (ImGui::Button(gui.tool == Tool::Focus ? "Focus: click a point..." : "Focus to point (F)")) {
+    gui.tool = Tool::Focus;
+    gui.say("click the point the selected fixture(s) should aim at");
+  }
+
+  ImGui::Separator();
+  float percent = a.intensity * 100.0f;
+  char label[32];
+  std::snprintf(label, sizeof(label), "Intensity%s", mark(prog, prog && prog->intensity));
+  if (track(ImGui::SliderFloat(label, &percent, 0.0f, 100.0f, "%.0f %%"))) set.intensity = std::clamp(percent / 100.0f, 0.0f, 1.0f);
+  glm::vec3 color = a.color;
+  std::snprintf(label, sizeof(label), "Colour%s", mark(prog, prog && prog->color));
+  if (track(ImGui::ColorEdit3(label, &color.x, ImGuiColorEditFlags_Float))) set.color = glm::clamp(color, 0.0f, 1.0f);
+  if (!p.colorWheels.empty()) {
+    for (const WheelSlot& slot : p.colorWheels.front().slots) {
+      if (!slot.color) continue;
+      const glm::vec3 c = *slot.color;
+      if (ImGui::ColorButton(slot.name.c_str(), ImVec4(c.x, c.y, c.z, 1.0f))) {
+        set.color = c;
+        item = ImGui::GetItemID();
+      }
+      if (ImGui::GetContentRegionAvail().x > 30) ImGui::SameLine();
+    }
+    ImGui::NewLine();
+  }
+  if (p.zoomDeg.max > p.zoomDeg.min) {
+    float zoom = a.zoomDeg.value_or(p.fieldAngleDeg);
+    std::snprintf(label, sizeof(label), "Zoom%s", mark(prog, prog && prog->zoomDeg));
+    if (track(ImGui::SliderFloat(label, &zoom, p.zoomDeg.min, p.zoomDeg.max, "%.1f deg"))) set.zoomDeg = zoom;
+  }
+  if (!p.goboWheels.empty()) {
+    std::snprintf(label, sizeof(label), "Gobo%s", mark(prog, prog && prog->gobo));
+    if (ImGui::BeginCombo(label, a.gobo.c_str())) {
+      for (const WheelSlot& slot : p.goboWheels.front().slots)
+        if (ImGui::Selectable(slot.name.c_str(), slot.name == a.gobo)) {
+          set.gobo = slot.name;
+          item = ImGui::GetItemID();
+        }
+      ImGui::EndCombo();
+    }
+    float rotation = a.goboRotationDeg;
+    std::snprintf(label, sizeof(label), "Gobo rot%s", mark(prog, prog && prog->goboRotationDeg));
+    if (track(ImGui::DragFloat(label, &rotation, 0.5f, -3600.0f, 3600.0f, "%.1f deg"))) set.goboRotationDeg = rotation;
+  }
+  float iris = a.iris;
+  std::snprintf(label, sizeof(label), "Iris%s", mark(prog, prog && prog->iris));
+  if (track(ImGui::SliderFloat(label, &iris, 0.05f, 1.0f, "%.2f"))) set.iris = iris;
+
+  if (set != CueValues{}) {
+    Status s = doc.setSelectionValues(set, gui.mergeFor(item));
+    if (!s) gui.say(s.error().str(), true);
+  }
+  ImGui::Separator();
+  ImGui::Text("Programmer: %zu fixture(s)", doc.programmer().values.size());
+  if (ImGui::Button("Record cue (Ctrl+R)")) recordCueFromProgrammer(gui);
+  if (ImGui::Button("Clear programmer (C)") && !doc.programmer().values.empty())
+    gui.report(doc.run(clearProgrammer()), "programmer cleared");
+  ImGui::End();
+}
+
+}  // namespace haze
