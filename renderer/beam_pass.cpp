@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "renderer/camera_uniforms.h"
 #include "renderer/gl/program.h"
 
 namespace haze {
@@ -14,36 +15,11 @@ namespace {
 
 constexpr GLuint kSceneDepthUnit = 5, kScatterUnit = 6, kScatterDepthUnit = 7;
 
-struct CameraBasis {
-  glm::vec3 forward, right, up;
-  float tanY, tanX;
-};
-
-CameraBasis basis(const CameraState& c, float aspect) {
-  CameraBasis b;
-  b.forward = glm::normalize(c.target - c.position);
-  b.right = glm::normalize(glm::cross(b.forward, c.up));
-  b.up = glm::cross(b.right, b.forward);
-  b.tanY = std::tan(glm::radians(c.fovYDeg) * 0.5f);
-  b.tanX = b.tanY * aspect;
-  return b;
-}
-
-void setCameraUniforms(GLuint prog, const CameraState& c, float aspect) {
-  const CameraBasis b = basis(c, aspect);
-  glProgramUniform3fv(prog, 20, 1, glm::value_ptr(c.position));
-  glProgramUniform3fv(prog, 21, 1, glm::value_ptr(b.forward));
-  const glm::vec3 rt = b.right * b.tanX, ut = b.up * b.tanY;
-  glProgramUniform3fv(prog, 22, 1, glm::value_ptr(rt));
-  glProgramUniform3fv(prog, 23, 1, glm::value_ptr(ut));
-  glProgramUniform2f(prog, 24, c.nearM, c.farM);
-}
-
 }  // namespace
 
 BeamFootprint beamFootprint(const BeamState& beam, const CameraState& camera, float aspect, float coneLengthM) {
   BeamFootprint fp;
-  const CameraBasis b = basis(camera, aspect);
+  const CameraBasis b = cameraBasis(camera, aspect);
   const float cutoff = beam.optics.cutoffHalfAngleRad();
   // The cone's hull: the lens and its cap at coneLengthM. 16 points on a circle widened by
   // 1 / cos(pi / 16) circumscribe the cap, so the projected hull contains the cone.

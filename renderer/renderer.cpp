@@ -13,11 +13,13 @@
 #include "renderer/beam_resources.h"
 #include "renderer/gl/program.h"
 #include "renderer/gpu_venue.h"
+#include "renderer/light_tiles.h"
 
 namespace haze {
 namespace {
 
 constexpr GLuint kBeamsBinding = 0, kLightMapUnit = 1, kShadowMapUnit = 2, kBaseTexUnit = 3, kEmissiveTexUnit = 4;
+constexpr GLuint kSceneDepthUnit = 5, kTileMasksBinding = 3;
 
 double msSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -41,6 +43,7 @@ struct Renderer::Impl {
   // The radiance target without its depth, for passes that read the scene depth as a texture.
   gl::Framebuffer radianceOnlyFbo{"radiance_only_fbo"};
   BeamPass beamPass;
+  LightTiles tiles;
   gl::VertexArray emptyVao{"fullscreen_vao"};
 
   Impl(const Venue& v, const RenderSettings& s)
@@ -71,6 +74,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
                                 .lattice = settings.lattice});
   if (!pass) return pass.error();
   impl->beamPass = std::move(*pass);
+  auto tiles = LightTiles::create(settings.width, settings.height);
+  if (!tiles) return tiles.error();
+  impl->tiles = std::move(*tiles);
 
   const int w = settings.width, h = settings.height;
   impl->radiance = gl::Texture(GL_TEXTURE_2D, "radiance");
@@ -130,6 +136,13 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
 
+  m.beams.bind(kBeamsBinding, kLightMapUnit, kShadowMapUnit);
+  const bool tiled = settings_.tiledSurfaces && m.beams.count() > 0;
+  if (tiled) {
+    glBindTextureUnit(kSceneDepthUnit, m.depth.id());
+    m.tiles.update(frame.camera, m.beams.count());
+    m.tiles.bind(kTileMasksBinding);
+  }
   const GLuint prog = m.surfaceProgram.id();
   glUseProgram(prog);
   glProgramUniformMatrix4fv(prog, 0, 1, GL_FALSE, glm::value_ptr(viewProj));
@@ -137,7 +150,8 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glProgramUniform1f(prog, 2, sigmaT);
   glProgramUniform3fv(prog, 3, 1, glm::value_ptr(med.ambient));
   glProgramUniform1i(prog, 8, m.beams.count());
-  m.beams.bind(kBeamsBinding, kLightMapUnit, kShadowMapUnit);
+  glProgramUniform1i(prog, 9, tiled ? m.tiles.columns() : 0);
+  glProgramUniform1i(prog, 10, m.tiles.maskWords());
   m.venue.bind();
   for (const GpuVenue::Draw& d : m.venue.draws()) {
     const GpuVenue::GpuMaterial& mat = m.venue.materials()[static_cast<size_t>(d.material)];

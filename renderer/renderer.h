@@ -26,6 +26,9 @@ struct RenderSettings {
   bool fusedPlanes = true;  // see BeamPassSettings::fused
   int minSamplesPerChord = 8;
   int lattice = 0;          // see BeamPassSettings::lattice
+  // Surfaces loop only over the beams that reach their 16x16 tile (renderer/light_tiles.h);
+  // off, every pixel tries every beam (same image, for tests and the bench).
+  bool tiledSurfaces = true;
 };
 
 struct DisplaySettings {

@@ -1,0 +1,71 @@
+// Tiled light culling (as in Forward+ renderers): for each 16x16-pixel tile of the screen, a bit
+// mask of the beams whose light cone can reach a surface seen in that tile, from the tile's depth
+// bounds in the depth pre-pass. The surface pass then loops over those beams only: a fragment
+// shader on a CPU rasteriser (llvmpipe) pays for every iteration of its light loop, however
+// little an iteration does, so testing every beam at every pixel cost more than the lighting.
+#include "beams.glsl"
+#include "camera.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+layout(std430, binding = 3) writeonly buffer TileMasks { uint tileMasks[]; };
+layout(location = 0) uniform ivec2 uTargetSize;
+layout(location = 1) uniform int uBeamCount;
+layout(location = 2) uniform int uMaskWords;
+
+// Window depths in [0, 1] as float bits: ordered like the floats, so atomics find the bounds.
+shared uint sMinDepth, sMaxDepth;
+
+float viewDepth(float d) {
+  float n = uNearFar.x, f = uNearFar.y;
+  return 2.0 * n * f / (f + n - (2.0 * d - 1.0) * (f - n));
+}
+
+// Whether a sphere reaches into a beam's cone (the test of Wronski, "Cull that cone", 2016):
+// the sphere's centre lies within its radius of the cone's surface, or inside the cone.
+bool sphereMeetsCone(vec3 centre, float radius, Beam b) {
+  vec3 v = centre - b.lensPos.xyz;
+  float along = dot(v, b.zb.xyz);
+  float perp = sqrt(max(dot(v, v) - along * along, 0.0));
+  float cosA = b.lensPos.w, sinA = sqrt(max(1.0 - cosA * cosA, 0.0));
+  return along > -radius && cosA * perp - sinA * along <= radius;
+}
+
+void main() {
+  if (gl_LocalInvocationIndex == 0u) {
+    sMinDepth = floatBitsToUint(1.0);
+    sMaxDepth = 0u;
+  }
+  barrier();
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (all(lessThan(p, uTargetSize))) {
+    float d = texelFetch(uSceneDepth, p, 0).r;
+    if (d < 1.0) {  // 1: no surface, nothing to light
+      atomicMin(sMinDepth, floatBitsToUint(d));
+      atomicMax(sMaxDepth, floatBitsToUint(d));
+    }
+  }
+  barrier();
+  bool empty = sMinDepth == floatBitsToUint(1.0);
+  float zMin = viewDepth(uintBitsToFloat(sMinDepth)), zMax = viewDepth(uintBitsToFloat(sMaxDepth));
+  // The tile's frustum between its depth bounds, in a sphere (padded for rounding).
+  vec2 ndc0 = vec2(gl_WorkGroupID.xy * 16u) / vec2(uTargetSize) * 2.0 - 1.0;
+  vec2 ndc1 = min(vec2(gl_WorkGroupID.xy * 16u + 16u) / vec2(uTargetSize) * 2.0 - 1.0, vec2(1.0));
+  vec3 centre = uEye + 0.5 * (zMin + zMax) * eyeRay(0.5 * (ndc0 + ndc1));
+  float radius = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    vec2 ndc = vec2((c & 1) != 0 ? ndc1.x : ndc0.x, (c & 2) != 0 ? ndc1.y : ndc0.y);
+    vec3 x = uEye + ((c & 4) != 0 ? zMax : zMin) * eyeRay(ndc);
+    radius = max(radius, distance(x, centre));
+  }
+  radius = radius * 1.01 + 1e-3;
+  uint tile = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+  for (uint w = gl_LocalInvocationIndex; w < uint(uMaskWords); w += 256u) {
+    uint bits = 0u;
+    for (int k = 0; k < 32 && !empty; ++k) {
+      int i = int(w) * 32 + k;
+      if (i >= uBeamCount) break;
+      if (beams[i].color.rgb != vec3(0.0) && sphereMeetsCone(centre, radius, beams[i])) bits |= 1u << uint(k);
+    }
+    tileMasks[tile * uint(uMaskWords) + w] = bits;
+  }
+}
