@@ -176,7 +176,7 @@ int runBench(const Args& args) {
 
   std::vector<double> total, cpu, shadow, surfaces, beams, post;
   double coldMs = 0.0;
-  uint64_t fragments = 0;
+  uint64_t fragments = 0, scattering = 0;
   for (int f = 0; f <= frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = processCpuMs();
@@ -195,6 +195,7 @@ int runBench(const Args& args) {
     beams.push_back(t.beamsMs);
     post.push_back(t.postMs);
     fragments = t.planeFragments;
+    scattering = t.scatteringFragments;
   }
   const RenderSettings rs = (*renderer)->settings();
   nlohmann::ordered_json out;
@@ -214,6 +215,7 @@ int runBench(const Args& args) {
   out["pass_ms"] = {{"shadow_maps", median(shadow)}, {"surfaces", median(surfaces)}, {"planes", median(beams)},
                     {"post", median(post)}};
   out["plane_fragments"] = fragments;
+  out["scattering_fragments"] = scattering;
   if (compare) {
     const ImageRGB gpu = (*renderer)->readRadiance();
     const auto t0 = std::chrono::steady_clock::now();
@@ -229,9 +231,10 @@ int runBench(const Args& args) {
     std::printf("%d fixtures at %dx%d, %s (%d planes, scatter 1/%d, %d samples per chord): %.1f ms per frame "
                 "(median of %d; cold %.1f ms)\n", fixtures, width, height, quality.c_str(), rs.planes,
                 rs.scatterDivisor, rs.minSamplesPerChord, median(total), frames, coldMs);
-    std::printf("  shadow maps %.1f  surfaces %.1f  planes %.1f  post %.1f ms; %llu plane fragments; "
-                "%.0f ms CPU per frame\n", median(shadow), median(surfaces), median(beams), median(post),
-                static_cast<unsigned long long>(fragments), median(cpu));
+    std::printf("  shadow maps %.1f  surfaces %.1f  planes %.1f  post %.1f ms; %llu plane fragments (%llu "
+                "scattering); %.0f ms CPU per frame\n", median(shadow), median(surfaces), median(beams),
+                median(post), static_cast<unsigned long long>(fragments),
+                static_cast<unsigned long long>(scattering), median(cpu));
     if (compare)
       std::printf("  reference %.0f ms, mean relative error %.4f, %.0fx faster\n", out["reference_ms"].get<double>(),
                   out["mean_relative_error"].get<double>(), out["speedup_vs_reference"].get<double>());

@@ -169,18 +169,10 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   times_.surfacesMs = msSince(t0);
 
   t0 = std::chrono::steady_clock::now();
-  // Light cones end where they leave the venue: bound them by the farthest corner of its box.
-  float coneLength = 1.0f;
-  for (const BeamState& b : frame.beams)
-    for (int i = 0; i < 8; ++i) {
-      const glm::vec3 c((i & 1) ? m.venue.boundsMax().x : m.venue.boundsMin().x,
-                        (i & 2) ? m.venue.boundsMax().y : m.venue.boundsMin().y,
-                        (i & 4) ? m.venue.boundsMax().z : m.venue.boundsMin().z);
-      coneLength = std::max(coneLength, glm::length(c - b.pose.lensPosition));
-    }
   times_.planeFragments =
-      m.beamPass.render(frame, m.beams, coneLength, m.depth.id(), m.radianceOnlyFbo.id(), accumulate);
+      m.beamPass.render(frame, m.beams, m.depth.id(), m.radianceOnlyFbo.id(), accumulate);
   times_.accumulatedFrames = m.beamPass.accumulatedFrames();
+  times_.scatteringFragments = m.beamPass.scatteringFragments();
   glFinish();
   times_.beamsMs = msSince(t0);
 }

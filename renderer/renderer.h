@@ -41,7 +41,8 @@ struct DisplaySettings {
 struct PassTimes {
   double shadowMapsMs = 0, surfacesMs = 0, beamsMs = 0, postMs = 0;
   int shadowMapsRendered = 0, lightMapsBaked = 0;
-  uint64_t planeFragments = 0;
+  uint64_t planeFragments = 0;       // footprint pixels times planes (or walks, when fused)
+  uint64_t scatteringFragments = 0;  // of those, the ones that added light
   int accumulatedFrames = 0;
 };
 
