@@ -1,5 +1,6 @@
 #include "renderer/renderer.h"
 
+#include <cassert>
 #include <chrono>
 #include <algorithm>
 #include <cmath>
@@ -39,6 +40,7 @@ struct Renderer::Impl {
   BeamResources beams;
   gl::Program shadowProgram, surfaceProgram, postProgram;
   gl::Texture radiance, depth, display;
+  gl::Sampler mipSampler{"radiance_mips"};  // for bloom: trilinear over the radiance's mip levels
   gl::Framebuffer sceneFbo{"scene_fbo"}, displayFbo{"display_fbo"};
   // The radiance target without its depth, for passes that read the scene depth as a texture.
   gl::Framebuffer radianceOnlyFbo{"radiance_only_fbo"};
@@ -80,7 +82,15 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
 
   const int w = settings.width, h = settings.height;
   impl->radiance = gl::Texture(GL_TEXTURE_2D, "radiance");
-  glTextureStorage2D(impl->radiance.id(), 1, GL_RGBA32F, w, h);
+  // Mip levels for bloom only (made on demand); everything else uses level 0.
+  int levels = 1;
+  while ((std::max(w, h) >> levels) > 0) ++levels;
+  glTextureStorage2D(impl->radiance.id(), levels, GL_RGBA32F, w, h);
+  glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MAX_LEVEL, levels - 1);
+  glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+  glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   impl->depth = gl::Texture(GL_TEXTURE_2D, "scene_depth");
@@ -191,6 +201,15 @@ ImageRGB Renderer::readRadiance() const {
   return img;
 }
 
+void Renderer::setRadiance(const ImageRGB& image) {
+  const int w = settings_.width, h = settings_.height;
+  assert(image.width == w && image.height == h && "setRadiance needs an image of the renderer's size");
+  std::vector<glm::vec4> rgba(static_cast<size_t>(w) * h);
+  for (int y = 0; y < h; ++y)  // GL's row 0 is the bottom
+    for (int x = 0; x < w; ++x) rgba[static_cast<size_t>(h - 1 - y) * w + x] = glm::vec4(image.at(x, y), 1.0f);
+  glTextureSubImage2D(impl_->radiance.id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
+}
+
 void Renderer::drawDisplay(const DisplaySettings& display, unsigned int framebuffer, int x, int y, int width,
                            int height) {
   Impl& m = *impl_;
@@ -201,9 +220,15 @@ void Renderer::drawDisplay(const DisplaySettings& display, unsigned int framebuf
   glDisable(GL_SCISSOR_TEST);
   glUseProgram(m.postProgram.id());
   glProgramUniform1f(m.postProgram.id(), 0, std::exp2(display.exposureEv) / DisplaySettings::kKeyNits);
+  const float bloom = std::clamp(display.bloom, 0.0f, 1.0f);
+  glProgramUniform1f(m.postProgram.id(), 1, bloom);
+  if (bloom > 0.0f) glGenerateTextureMipmap(m.radiance.id());
   glBindTextureUnit(0, m.radiance.id());
+  glBindTextureUnit(1, m.radiance.id());
+  glBindSampler(1, m.mipSampler.id());
   glBindVertexArray(m.emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindSampler(1, 0);
 }
 
 std::vector<unsigned char> Renderer::readDisplay(const DisplaySettings& display) {
