@@ -38,7 +38,7 @@ glm::mat4 cameraViewProjection(const CameraState& c, int width, int height) {
 struct Renderer::Impl {
   GpuVenue venue;
   BeamResources beams;
-  gl::Program shadowProgram, surfaceProgram, postProgram;
+  gl::Program shadowProgram, surfaceProgram, postProgram, bloomPostProgram;
   gl::Texture radiance, depth, display;
   gl::Sampler mipSampler{"radiance_mips"};  // for bloom: trilinear over the radiance's mip levels
   gl::Framebuffer sceneFbo{"scene_fbo"}, displayFbo{"display_fbo"};
@@ -66,6 +66,10 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   if (!surface) return surface.error();
   auto post = gl::buildProgram({.label = "post", .vertex = "fullscreen.vert.glsl", .fragment = "post.frag.glsl"});
   if (!post) return post.error();
+  auto bloomPost = gl::buildProgram(
+      {.label = "post_bloom", .vertex = "fullscreen.vert.glsl", .fragment = "post.frag.glsl", .defines = {"BLOOM"}});
+  if (!bloomPost) return bloomPost.error();
+  impl->bloomPostProgram = std::move(*bloomPost);
   impl->shadowProgram = std::move(*shadow);
   impl->surfaceProgram = std::move(*surface);
   impl->postProgram = std::move(*post);
@@ -218,11 +222,14 @@ void Renderer::drawDisplay(const DisplaySettings& display, unsigned int framebuf
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
-  glUseProgram(m.postProgram.id());
-  glProgramUniform1f(m.postProgram.id(), 0, std::exp2(display.exposureEv) / DisplaySettings::kKeyNits);
   const float bloom = std::clamp(display.bloom, 0.0f, 1.0f);
-  glProgramUniform1f(m.postProgram.id(), 1, bloom);
-  if (bloom > 0.0f) glGenerateTextureMipmap(m.radiance.id());
+  const GLuint prog = bloom > 0.0f ? m.bloomPostProgram.id() : m.postProgram.id();
+  glUseProgram(prog);
+  glProgramUniform1f(prog, 0, std::exp2(display.exposureEv) / DisplaySettings::kKeyNits);
+  if (bloom > 0.0f) {
+    glProgramUniform1f(prog, 1, bloom);
+    glGenerateTextureMipmap(m.radiance.id());
+  }
   glBindTextureUnit(0, m.radiance.id());
   glBindTextureUnit(1, m.radiance.id());
   glBindSampler(1, m.mipSampler.id());

@@ -18,6 +18,7 @@ vec3 srgbEncode(vec3 c) {
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
 }
 
+#ifdef BLOOM  // a variant of its own: a CPU rasteriser would run the glare taps even when off
 const int kBloomLevels = 7;
 
 vec3 glare(vec2 uv) {
@@ -38,9 +39,12 @@ vec3 glare(vec2 uv) {
   }
   return sum / float(kBloomLevels);
 }
+#endif
 
 void main() {
   vec3 L = texture(uRadiance, vUv).rgb;
-  if (uBloom > 0.0) L = mix(L, glare(vUv), uBloom);
+#ifdef BLOOM
+  L = mix(L, glare(vUv), uBloom);
+#endif
   outColor = vec4(srgbEncode(aces(L * uExposure)), 1.0);
 }
