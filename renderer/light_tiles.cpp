@@ -33,8 +33,9 @@ void LightTiles::update(const CameraState& camera, int beamCount) {
   glProgramUniform2i(prog, 0, width_, height_);
   glProgramUniform1i(prog, 1, beamCount);
   glProgramUniform1i(prog, 2, maskWords_);
+  glProgramUniform2i(prog, 3, columns_, rows_);
   bind(3);
-  glDispatchCompute(static_cast<GLuint>(columns_), static_cast<GLuint>(rows_), 1);
+  glDispatchCompute(static_cast<GLuint>((columns_ + 7) / 8), static_cast<GLuint>(rows_), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

@@ -6,14 +6,14 @@
 #include "beams.glsl"
 #include "camera.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+// One invocation per tile (no barriers or shared memory: on a CPU rasteriser those cost far
+// more than reading the tile's 256 depths in a loop).
+layout(local_size_x = 8, local_size_y = 1) in;
 layout(std430, binding = 3) writeonly buffer TileMasks { uint tileMasks[]; };
 layout(location = 0) uniform ivec2 uTargetSize;
 layout(location = 1) uniform int uBeamCount;
 layout(location = 2) uniform int uMaskWords;
-
-// Window depths in [0, 1] as float bits: ordered like the floats, so atomics find the bounds.
-shared uint sMinDepth, sMaxDepth;
+layout(location = 3) uniform ivec2 uTiles;  // columns, rows
 
 float viewDepth(float d) {
   float n = uNearFar.x, f = uNearFar.y;
@@ -31,25 +31,23 @@ bool sphereMeetsCone(vec3 centre, float radius, Beam b) {
 }
 
 void main() {
-  if (gl_LocalInvocationIndex == 0u) {
-    sMinDepth = floatBitsToUint(1.0);
-    sMaxDepth = 0u;
-  }
-  barrier();
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (all(lessThan(p, uTargetSize))) {
-    float d = texelFetch(uSceneDepth, p, 0).r;
-    if (d < 1.0) {  // 1: no surface, nothing to light
-      atomicMin(sMinDepth, floatBitsToUint(d));
-      atomicMax(sMaxDepth, floatBitsToUint(d));
+  ivec2 tileXY = ivec2(gl_GlobalInvocationID.xy);
+  if (tileXY.x >= uTiles.x || tileXY.y >= uTiles.y) return;
+  ivec2 p0 = tileXY * 16, p1 = min(p0 + 16, uTargetSize);
+  float dMin = 1.0, dMax = 0.0;
+  for (int y = p0.y; y < p1.y; ++y)
+    for (int x = p0.x; x < p1.x; ++x) {
+      float d = texelFetch(uSceneDepth, ivec2(x, y), 0).r;
+      if (d < 1.0) {  // 1: no surface, nothing to light
+        dMin = min(dMin, d);
+        dMax = max(dMax, d);
+      }
     }
-  }
-  barrier();
-  bool empty = sMinDepth == floatBitsToUint(1.0);
-  float zMin = viewDepth(uintBitsToFloat(sMinDepth)), zMax = viewDepth(uintBitsToFloat(sMaxDepth));
+  bool empty = dMin >= 1.0;
+  float zMin = viewDepth(dMin), zMax = viewDepth(max(dMax, dMin));
   // The tile's frustum between its depth bounds, in a sphere (padded for rounding).
-  vec2 ndc0 = vec2(gl_WorkGroupID.xy * 16u) / vec2(uTargetSize) * 2.0 - 1.0;
-  vec2 ndc1 = min(vec2(gl_WorkGroupID.xy * 16u + 16u) / vec2(uTargetSize) * 2.0 - 1.0, vec2(1.0));
+  vec2 ndc0 = vec2(p0) / vec2(uTargetSize) * 2.0 - 1.0;
+  vec2 ndc1 = vec2(p1) / vec2(uTargetSize) * 2.0 - 1.0;
   vec3 centre = uEye + 0.5 * (zMin + zMax) * eyeRay(0.5 * (ndc0 + ndc1));
   float radius = 0.0;
   for (int c = 0; c < 8; ++c) {
@@ -58,14 +56,14 @@ void main() {
     radius = max(radius, distance(x, centre));
   }
   radius = radius * 1.01 + 1e-3;
-  uint tile = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-  for (uint w = gl_LocalInvocationIndex; w < uint(uMaskWords); w += 256u) {
+  int tile = tileXY.y * uTiles.x + tileXY.x;
+  for (int w = 0; w < uMaskWords; ++w) {
     uint bits = 0u;
     for (int k = 0; k < 32 && !empty; ++k) {
-      int i = int(w) * 32 + k;
+      int i = w * 32 + k;
       if (i >= uBeamCount) break;
       if (beams[i].color.rgb != vec3(0.0) && sphereMeetsCone(centre, radius, beams[i])) bits |= 1u << uint(k);
     }
-    tileMasks[tile * uint(uMaskWords) + w] = bits;
+    tileMasks[tile * uMaskWords + w] = bits;
   }
 }
