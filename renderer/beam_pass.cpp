@@ -112,8 +112,11 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, G
 
   // Each cone only as far as it can light anything (its shadow map's farthest surface).
   std::vector<BeamFootprint> footprints(frame.beams.size());
-  for (size_t i = 0; i < frame.beams.size(); ++i)
+  for (size_t i = 0; i < frame.beams.size(); ++i) {
+    const BeamOptics& o = frame.beams[i].optics;
+    if (o.dimmer <= 0.0f || o.color == glm::vec3(0.0f)) continue;  // dark: adds nothing anywhere
     footprints[i] = beamFootprint(frame.beams[i], frame.camera, aspect, beams.reachM(static_cast<int>(i)));
+  }
 
   uint64_t fragments = 0;
   glBeginQuery(GL_SAMPLES_PASSED, scattered_.id());
