@@ -162,6 +162,8 @@ int runBench(const Args& args) {
   }
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
+  if (*q == Quality::Reference)
+    return fail("--quality reference is the CPU integrator: time it against a GPU preset with --compare-reference");
   auto ctx = createHeadlessContext();
   if (!ctx) return fail(ctx.error().str());
   if (study) return runStudy(width, height);
