@@ -18,6 +18,7 @@
 
 #include "fixtures/gdtf.h"
 #include "fixtures/zip_archive.h"
+#include "shows/mvr_camera.h"
 #include "shows/mvr_venue.h"
 #include "shows/show_save.h"
 
@@ -116,10 +117,18 @@ class SceneWalker {
         walkChildren(obj.child("ChildList"), world, depth + 1);
       } else if (kind == "SceneObject" || kind == "Truss" || kind == "Support" || kind == "VideoScreen" ||
                  kind == "Projector" || kind == "FocusPoint") {
-        if (kind == "FocusPoint") focusPointsMm[lower(obj.attribute("uuid").value())] = glm::dvec3(world[3]);
-        if (!obj.child("GDTFSpec").text().empty() && kind != "FocusPoint")
-          warnOnce("gdtf-" + kind, obj, "a " + kind + " with a GDTFSpec is imported as geometry only, not as a fixture");
-        addGeometries(obj.child("Geometries"), world, depth + 1, "");
+        if (kind == "FocusPoint") {
+          focusPointsMm[lower(obj.attribute("uuid").value())] = glm::dvec3(world[3]);
+          // Its geometry is the marker a drawing shows, not a thing in the room: Vectorworks
+          // puts a 0.46 m square at each focus point, right in the middle of the beam aimed at
+          // it, where it would cast a shadow on the floor.
+          if (obj.child("Geometries").first_child())
+            warn(obj, "the focus point's geometry (a marker for drawings) is not placed in the venue; it would shadow the beam aimed at it");
+        } else {
+          if (!obj.child("GDTFSpec").text().empty())
+            warnOnce("gdtf-" + kind, obj, "a " + kind + " with a GDTFSpec is imported as geometry only, not as a fixture");
+          addGeometries(obj.child("Geometries"), world, depth + 1, "");
+        }
         walkChildren(obj.child("ChildList"), world, depth + 1);
       } else {
         warnOnce("object/" + kind, obj, "unknown scene element <" + kind + ">; ignored");
@@ -301,8 +310,8 @@ Result<MvrImport> importMvr(const std::filesystem::path& mvrFile, const std::fil
   }
   std::set<int> usedIds;
   int nextId = takenIds.empty() ? 1 : *takenIds.rbegin() + 1;
-  glm::vec3 lo(1e30f), hi(-1e30f);
   std::vector<std::pair<std::size_t, std::string>> focusOf;  // fixture index -> focus uuid
+  std::vector<glm::vec3> beamDirs;  // by fixture: the beam at pan = tilt = 0, haze world
 
   for (const FixtureSource& f : walker.fixtures) {
     auto [it, fresh] = gdtfs.try_emplace(f.spec);
@@ -395,10 +404,9 @@ Result<MvrImport> importMvr(const std::filesystem::path& mvrFile, const std::fil
     const glm::dmat3 rHaze = hazeFromMvr * rot * glm::transpose(hazeFromMvr);
     const glm::vec3 posM = mvrPointToHazeM(glm::dvec3(w[3])) + glm::vec3(rHaze * glm::dvec3(g.pivotOffsetM));
     def.position = glm::vec3(std::round(posM.x * 1e4f) / 1e4f, std::round(posM.y * 1e4f) / 1e4f, std::round(posM.z * 1e4f) / 1e4f);
-    lo = glm::min(lo, def.position);
-    hi = glm::max(hi, def.position);
     if (!f.focus.empty()) focusOf.emplace_back(show.fixtures.size(), f.focus);
     show.fixtures.push_back(def);
+    beamDirs.push_back(glm::vec3(rHaze * glm::dvec3(0.0, -1.0, 0.0)));
   }
   out.fixtureCount = static_cast<int>(show.fixtures.size());
 
@@ -439,25 +447,54 @@ Result<MvrImport> importMvr(const std::filesystem::path& mvrFile, const std::fil
   }
   if (!focusCue.values.empty()) show.cueLists.push_back(CueList{"MVR focus", {focusCue}});
 
-  // A camera that sees the rig: from the audience side (+Z), above, looking at its middle.
-  if (!show.fixtures.empty()) {
-    const glm::vec3 centre = 0.5f * (lo + hi);
-    const float extent = std::max(4.0f, glm::length(hi - lo));
-    CameraDef cam;
-    cam.name = "MVR overview";
-    cam.target = glm::round(centre * 100.0f) / 100.0f;
-    cam.position = glm::round((centre + glm::vec3(0.0f, 0.4f * extent, 1.2f * extent)) * 100.0f) / 100.0f;
-    cam.farM = std::max(100.0f, 4.0f * extent);
-    show.cameras.push_back(cam);
-  }
-
-  if (options.writeVenue && !walker.geometry.empty()) {
+  std::vector<glm::vec3> venueTrianglesM;
+  if (options.writeVenue) {
     const std::string venueName = stem + "_venue.gltf";
-    auto venue = writeMvrVenue(*zip, walker.geometry, showDir / venueName, options.maxVenueTriangles, out.warnings);
+    Result<MvrVenueStats> venue = MvrVenueStats{};
+    if (!walker.geometry.empty())
+      venue = writeMvrVenue(*zip, walker.geometry, showDir / venueName, options.maxVenueTriangles, out.warnings);
     if (!venue.ok()) return venue.error();
+    if (venue->instances == 0 && !show.fixtures.empty()) {
+      // Nothing to stand on: a floor at MVR z = 0 under the rig and 10 m around it.
+      glm::vec2 lo(1e30f), hi(-1e30f);
+      for (const FixtureDef& def : show.fixtures) {
+        lo = glm::min(lo, glm::vec2(def.position.x, def.position.z));
+        hi = glm::max(hi, glm::vec2(def.position.x, def.position.z));
+      }
+      lo = glm::round(lo - 10.0f);
+      hi = glm::round(hi + 10.0f);
+      out.warnings.push_back(std::string(kSceneXml) + " <Scene>: the MVR places no geometry; the venue is a floor at MVR z = 0 from (" +
+                             std::to_string(static_cast<int>(lo.x)) + ", " + std::to_string(static_cast<int>(-hi.y)) + ") to (" +
+                             std::to_string(static_cast<int>(hi.x)) + ", " + std::to_string(static_cast<int>(-lo.y)) +
+                             ") m (MVR x, y), so that beams have somewhere to land");
+      venue = writeMvrFloorVenue(showDir / venueName, lo, hi);
+      if (!venue.ok()) return venue.error();
+    }
     out.geometryInstances = venue->instances;
     out.venueTriangles = venue->triangles;
     if (venue->instances > 0) show.venueGltf = venueName;
+    venueTrianglesM = std::move(venue->placedTrianglesM);
+  }
+
+  // A camera that sees the rig and where it is aimed (its focus points, else where its beams at
+  // rest meet the venue, if within 30 m), from inside the venue when walls enclose it.
+  if (!show.fixtures.empty()) {
+    std::vector<glm::vec3> rigPointsM;
+    std::vector<bool> focused(show.fixtures.size(), false);
+    for (const FixtureDef& def : show.fixtures) rigPointsM.push_back(def.position);
+    for (const auto& [index, uuid] : focusOf) {
+      if (auto fp = walker.focusPointsMm.find(uuid); fp != walker.focusPointsMm.end()) {
+        rigPointsM.push_back(mvrPointToHazeM(fp->second));
+        focused[index] = true;
+      }
+    }
+    const MvrRayScene venue(std::move(venueTrianglesM));
+    for (std::size_t i = 0; i < show.fixtures.size(); ++i) {
+      if (focused[i]) continue;
+      const float hit = venue.firstHitM(show.fixtures[i].position, beamDirs[i], 30.0f);
+      if (hit > 0.0f) rigPointsM.push_back(show.fixtures[i].position + hit * beamDirs[i]);
+    }
+    show.cameras.push_back(mvrOverviewCamera(rigPointsM, venue));
   }
 
   SaveOptions save;

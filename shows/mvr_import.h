@@ -30,6 +30,13 @@ Result<glm::dmat4> parseMvrMatrix(const std::string& text);
 // (unpatched). An Error message when the text is neither form or out of range.
 Result<Patch> parseMvrAddress(const std::string& text);
 
+// Warnings that say the same thing folded into one line each, for people: the same sentence
+// after the place (the text after the last ">: "), with numbers and quoted names set aside,
+// is one kind. Each kind is its first warning in full, then " (and N more like it)" when it
+// came more than once; kinds in the order they first came. A stub GDTF repeated over a
+// hundred channels becomes one line instead of a hundred.
+std::vector<std::string> groupMvrWarnings(const std::vector<std::string>& warnings);
+
 struct MvrImportOptions {
   bool writeVenue = true;          // build SHOW_venue.gltf from the scene's geometry
   std::size_t maxVenueTriangles = 4'000'000;  // geometry beyond this is left out (warned)

@@ -22,6 +22,10 @@ namespace haze {
 
 namespace {
 
+// Placed triangles kept for the camera's rays (36 bytes each): symbols of symbols can place a
+// stored mesh 200000 times, which must not become gigabytes.
+constexpr std::size_t kMaxPlacedTriangles = 2'000'000;
+
 struct MeshData {
   std::vector<float> positions;  // xyz
   std::vector<float> normals;    // xyz
@@ -113,6 +117,7 @@ Result<MvrVenueStats> writeMvrVenue(const ZipArchive& archive, const std::vector
 
   MvrVenueStats stats;
   std::map<std::string, int> meshIndex;  // file -> glTF mesh, -1 when it failed
+  std::vector<MeshData> loaded;          // by glTF mesh, for the placed triangles
   std::string bin;
   nlohmann::json accessors = nlohmann::json::array(), views = nlohmann::json::array(),
                  meshes = nlohmann::json::array(), nodes = nlohmann::json::array();
@@ -156,6 +161,9 @@ Result<MvrVenueStats> writeMvrVenue(const ZipArchive& archive, const std::vector
         if (mesh.yUpMetres) meshes.back()["extras"] = {{"mvr_units", "m, Y-up"}};
         else meshes.back()["extras"] = {{"mvr_units", "mm, Y-up (assimp turned the .3ds Z-up)"}};
         stats.triangles += mesh.indices.size() / 3;
+        mesh.normals.clear();
+        mesh.normals.shrink_to_fit();
+        loaded.push_back(std::move(mesh));
       }
     }
     if (it->second < 0) continue;
@@ -165,6 +173,17 @@ Result<MvrVenueStats> writeMvrVenue(const ZipArchive& archive, const std::vector
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) matrix.push_back(static_cast<double>(static_cast<float>(m[c][r])));
     nodes.push_back({{"name", inst.place}, {"mesh", it->second}, {"matrix", matrix}});
+    const MeshData& placed = loaded[static_cast<std::size_t>(it->second)];
+    if (stats.placedTrianglesM.size() + placed.indices.size() <= 3 * kMaxPlacedTriangles) {
+      for (std::uint32_t index : placed.indices) {
+        const float* p = &placed.positions[3 * static_cast<std::size_t>(index)];
+        stats.placedTrianglesM.push_back(glm::vec3(m * glm::dvec4(p[0], p[1], p[2], 1.0)));
+      }
+    } else if (!stats.placedTrianglesCut) {
+      stats.placedTrianglesCut = true;
+      warnings.push_back(inst.place + ": the venue places more than " + std::to_string(kMaxPlacedTriangles) +
+                         " triangles; the overview camera is placed against the first ones only (the venue itself is complete)");
+    }
     ++stats.instances;
   }
 
@@ -193,6 +212,45 @@ Result<MvrVenueStats> writeMvrVenue(const ZipArchive& archive, const std::vector
   }
   Status s = writeFileAtomically(gltfFile, gltf.dump(1), false);
   if (!s.ok()) return s.error();
+  return stats;
+}
+
+Result<MvrVenueStats> writeMvrFloorVenue(const std::filesystem::path& gltfFile, const glm::vec2& loM, const glm::vec2& hiM) {
+  const float positions[12] = {loM.x, 0, loM.y, hiM.x, 0, loM.y, hiM.x, 0, hiM.y, loM.x, 0, hiM.y};
+  const float normals[12] = {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0};
+  const std::uint32_t indices[6] = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from above
+  std::string bin;
+  appendBytes(bin, positions, sizeof positions);
+  appendBytes(bin, normals, sizeof normals);
+  appendBytes(bin, indices, sizeof indices);
+  const std::string binName = gltfFile.stem().string() + ".bin";
+  const nlohmann::json gltf = {
+      {"asset", {{"version", "2.0"}, {"generator", "haze import-mvr (floor: the MVR has no geometry)"}}},
+      {"scene", 0},
+      {"scenes", {{{"name", "MVR floor"}, {"nodes", {0}}}}},
+      {"nodes", {{{"name", "floor at MVR z = 0"}, {"mesh", 0}}}},
+      {"meshes", {{{"name", "floor"}, {"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", 2}, {"material", 0}, {"mode", 4}}}}}}},
+      {"materials", {{{"name", "MVR floor"},
+                      {"pbrMetallicRoughness", {{"baseColorFactor", {0.6, 0.6, 0.6, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.9}}},
+                      {"doubleSided", true}}}},
+      {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"},
+                      {"min", {loM.x, 0.0f, loM.y}}, {"max", {hiM.x, 0.0f, hiM.y}}},
+                     {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+                     {{"bufferView", 2}, {"componentType", 5125}, {"count", 6}, {"type", "SCALAR"}}}},
+      {"bufferViews", {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", sizeof positions}, {"target", 34962}},
+                       {{"buffer", 0}, {"byteOffset", sizeof positions}, {"byteLength", sizeof normals}, {"target", 34962}},
+                       {{"buffer", 0}, {"byteOffset", sizeof positions + sizeof normals}, {"byteLength", sizeof indices}, {"target", 34963}}}},
+      {"buffers", {{{"uri", binName}, {"byteLength", bin.size()}}}},
+  };
+  Status s = writeFileAtomically(gltfFile.parent_path() / binName, bin, false);
+  if (!s.ok()) return s.error();
+  s = writeFileAtomically(gltfFile, gltf.dump(1), false);
+  if (!s.ok()) return s.error();
+  MvrVenueStats stats;
+  stats.instances = 1;
+  stats.meshes = 1;
+  stats.triangles = 2;
+  for (std::uint32_t i : indices) stats.placedTrianglesM.push_back({positions[3 * i], 0.0f, positions[3 * i + 2]});
   return stats;
 }
 

@@ -174,7 +174,29 @@ TEST(MvrImport, BasicFixture) {
   EXPECT_FALSE(f.patch.has_value());  // Address 0
   EXPECT_EQ(f.id, 1);                 // FixtureID 0 is no id: the first free one
   EXPECT_TRUE(std::filesystem::exists(imp.dir / "rig_gdtf" / "LED PAR 64 RGBW.gdtf"));
-  EXPECT_TRUE(imp.result->show.venueGltf.empty());  // no geometry in this scene
+  // No geometry in this scene: the venue is a floor at MVR z = 0, 10 m around the fixture
+  // (MVR x = y = 5000 mm: haze x = 5, z = -5), and that is warned.
+  ASSERT_EQ(imp.result->show.venueGltf, "rig_venue.gltf");
+  std::ifstream in(imp.dir / "rig_venue.gltf");
+  const auto gltf = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_FALSE(gltf.is_discarded());
+  ASSERT_EQ(gltf["nodes"].size(), 1u);
+  const auto& acc = gltf["accessors"][0];
+  EXPECT_EQ(acc["min"][1].get<double>(), 0.0);
+  EXPECT_EQ(acc["max"][1].get<double>(), 0.0);
+  EXPECT_LE(acc["min"][0].get<double>(), 5.0 - 9.5);
+  EXPECT_GE(acc["max"][0].get<double>(), 5.0 + 9.5);
+  EXPECT_LE(acc["min"][2].get<double>(), -5.0 - 9.5);
+  EXPECT_GE(acc["max"][2].get<double>(), -5.0 + 9.5);
+  bool floorWarned = false;
+  for (const auto& w : imp.result->warnings) floorWarned |= w.find("places no geometry; the venue is a floor") != std::string::npos;
+  EXPECT_TRUE(floorWarned);
+  // The overview camera looks at the middle between the fixture and where its beam (straight
+  // down, identity Matrix) meets that floor: (5, 2.5, -5) plus the pivot's drop.
+  ASSERT_EQ(imp.result->show.cameras.size(), 1u);
+  EXPECT_NEAR(imp.result->show.cameras[0].target.x, 5.0, 0.01);
+  EXPECT_NEAR(imp.result->show.cameras[0].target.y, 0.5 * f.position.y, 0.01);
+  EXPECT_NEAR(imp.result->show.cameras[0].target.z, -5.0, 0.01);
   // Unused MVR fields are warned with their XML place.
   bool castShadowWarned = false;
   for (const auto& w : imp.result->warnings)
@@ -186,13 +208,22 @@ TEST(MvrImport, SceneObjectsTheatre) {
   checkAgainstXml("scene_objects.mvr", 72);
   Imported imp("scene_objects.mvr");
   ASSERT_TRUE(imp.result.ok());
-  // 100 Geometry3D .glb files placed in the venue; every fixture has a focus point below it.
-  EXPECT_EQ(imp.result->geometryInstances, 100);
+  // 100 Geometry3D .glb files: 28 of the 28 scene objects (walls, ceiling, chandeliers) are
+  // placed in the venue; the 72 of the focus points are drawing markers, left out and warned
+  // (each would be a 0.46 m square in the middle of a beam, shadowing it).
+  EXPECT_EQ(imp.result->geometryInstances, 28);
   ASSERT_EQ(imp.result->show.venueGltf, "rig_venue.gltf");
   std::ifstream in(imp.dir / "rig_venue.gltf");
   const auto gltf = nlohmann::json::parse(in, nullptr, false);
   ASSERT_FALSE(gltf.is_discarded());
-  EXPECT_EQ(gltf["nodes"].size(), 100u);
+  EXPECT_EQ(gltf["nodes"].size(), 28u);
+  int markersWarned = 0;
+  for (const auto& w : imp.result->warnings) markersWarned += w.find("<FocusPoint name=") != std::string::npos && w.find("marker") != std::string::npos;
+  EXPECT_EQ(markersWarned, 72);
+  bool firstMarkerWarned = false;
+  for (const auto& w : imp.result->warnings)
+    firstMarkerWarned |= w.rfind("GeneralSceneDescription.xml line 1952 <FocusPoint name=\"A1\">: ", 0) == 0;
+  EXPECT_TRUE(firstMarkerWarned);
   EXPECT_TRUE(std::filesystem::exists(imp.dir / "rig_venue.bin"));
   ASSERT_EQ(imp.result->show.cueLists.size(), 1u);
   const Cue& focus = imp.result->show.cueLists[0].cues.at(0);
@@ -289,15 +320,51 @@ TEST(MvrImport, VenueGeometryIsPlacedInHazeFrame) {
     ASSERT_TRUE(imp.result.ok());
     std::ifstream in(imp.dir / "rig_venue.gltf");
     const auto gltf = nlohmann::json::parse(in, nullptr, false);
-    // Line 1957: the marker of FocusPoint A1 at (-14198.6, 7189.12, 2438.4) mm, a flat disc of
-    // 0.457 m across lying in glTF's XZ plane, i.e. horizontal.
-    const auto [lo, hi] = nodeBounds(gltf, "GeneralSceneDescription.xml line 1957 <Geometry3D>");
-    EXPECT_NEAR(lo.y, 2.4384, 1e-3);
-    EXPECT_NEAR(hi.y, 2.4384, 1e-3);
-    EXPECT_NEAR(hi.x - lo.x, 0.4572, 2e-3);
-    EXPECT_NEAR(0.5 * (lo.x + hi.x), -14.1986, 2e-3);
-    EXPECT_NEAR(0.5 * (lo.z + hi.z), -7.18912, 2e-3);
+    // Line 31: a wall (.glb, metres, Y-up) whose SceneObject's Matrix (line 27) is the identity
+    // rotation at (-14706.6, -1371.6, 4572) mm: the wall's middle. In MVR it stands 30 ft
+    // (9.144 m) tall along Z and runs along Y; in haze it must stand along Y and run along Z.
+    const auto [lo, hi] = nodeBounds(gltf, "GeneralSceneDescription.xml line 31 <Geometry3D>");
+    const double origin[3] = {-14706.6, -1371.6, 4572.0};
+    EXPECT_LT(glm::length(0.5 * (lo + hi) - toHaze(origin)), 2e-3);
+    EXPECT_NEAR(hi.y - lo.y, 9.144, 2e-3);
+    EXPECT_NEAR(lo.y, 0.0, 2e-3);          // on the floor
+    EXPECT_GT(hi.z - lo.z, 15.0);          // runs along haze Z (MVR Y)
+    EXPECT_LT(hi.x - lo.x, 0.2);           // thin along X
+    // The focus point markers (line 1957 is A1's) are not in the venue.
+    for (const auto& n : gltf["nodes"]) EXPECT_NE(n["name"], "GeneralSceneDescription.xml line 1957 <Geometry3D>");
   }
+}
+
+// The overview camera of the theatre stands inside the room: inside the four walls, whose
+// middles the XML gives (the Matrix lines 27, 39, 51, 63), below every piece of ceiling
+// (the venue nodes of layer "Theatre FloorPlan" above 7 m, bounds read from the written glTF),
+// and nothing of the venue lies between it and its target.
+TEST(MvrImport, OverviewCameraIsInsideTheTheatre) {
+  Imported imp("scene_objects.mvr");
+  ASSERT_TRUE(imp.result.ok());
+  const CameraDef* cam = nullptr;
+  for (const CameraDef& c : imp.result->show.cameras)
+    if (c.name == "MVR overview") cam = &c;
+  ASSERT_NE(cam, nullptr);
+  const double west[3] = {-14706.6, -1371.6, 0}, east[3] = {15621.0, -1371.6, 0};
+  const double north[3] = {457.2, 7696.2, 0}, south[3] = {457.2, -10439.4, 0};
+  EXPECT_GT(cam->position.x, toHaze(west).x);
+  EXPECT_LT(cam->position.x, toHaze(east).x);
+  EXPECT_GT(cam->position.z, toHaze(north).z);  // MVR +Y is haze -Z
+  EXPECT_LT(cam->position.z, toHaze(south).z);
+  EXPECT_GT(cam->position.y, 0.0f);
+  std::ifstream in(imp.dir / "rig_venue.gltf");
+  const auto gltf = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_FALSE(gltf.is_discarded());
+  double ceilingLowest = 1e30;
+  for (const auto& n : gltf["nodes"]) {
+    const auto [lo, hi] = boundsOf(gltf, n);
+    if (lo.y > 7.0) ceilingLowest = std::min(ceilingLowest, lo.y);
+  }
+  ASSERT_LT(ceilingLowest, 1e29);
+  EXPECT_LT(cam->position.y, ceilingLowest);
+  // The target is the middle of the pendants (y 7.8169) and their focus points (y 2.4384).
+  EXPECT_NEAR(cam->target.y, 0.5 * (7.8169 + 2.4384), 0.01);
 }
 
 // --- broken MVRs ---------------------------------------------------------------------------
@@ -383,6 +450,44 @@ TEST(MvrBroken, MissingGdtfIsWarnedAndTheRestImports) {
   for (const Error& e : validateShowFile(b.dir / "out.haze.json")) ADD_FAILURE() << e.str();
 }
 
+// A GDTF whose beam does not point along its own -Z at rest (the LED PAR's Beam turned 90
+// degrees about GDTF Y, to -X): the GDTF import's warning is passed on with the GDTF's name, and
+// the fixture is placed by its -Z: with the Matrix's w = MVR -Y, the beam at rest points along
+// MVR +Y, which is haze -Z (docs/mvr.md, README).
+TEST(MvrOrientation, BeamNotAlongMinusZIsWarnedAndFollowsTheFixturesMinusZ) {
+  test::TempDir dir("mvrbeam");
+  test::writeFile(dir / "par.gdtf", gdtfBytes());
+  auto par = ZipArchive::open(dir / "par.gdtf");
+  ASSERT_TRUE(par.ok());
+  std::vector<test::ZipItem> items;
+  bool turned = false;
+  for (const ZipEntry& e : par->entries()) {
+    auto bytes = par->read(e.name);
+    ASSERT_TRUE(bytes.ok());
+    std::string data(bytes->begin(), bytes->end());
+    if (e.name == "description.xml") {
+      const std::string rest = "Position=\"{1.000000,0.000000,0.000000,0.000000}{0.000000,1.000000,0.000000,0.000000}"
+                               "{0.000000,0.000000,1.000000,-0.134000}{0,0,0,1}\"";
+      const auto at = data.find(rest);
+      ASSERT_NE(at, std::string::npos);
+      data.replace(at, rest.size(), "Position=\"{0,0,1,0}{0,1,0,0}{-1,0,0,-0.134}{0,0,0,1}\"");
+      turned = true;
+    }
+    items.push_back({e.name, data});
+  }
+  ASSERT_TRUE(turned);
+  ASSERT_TRUE(test::writeZip(dir / "turned.gdtf", items));
+  const std::string xml = sceneXml(fixtureXml("T", "turned.gdtf", "1", "{1,0,0}{0,0,1}{0,-1,0}{1000,2000,3000}"));
+  Built b(true, {{"GeneralSceneDescription.xml", xml}, {"turned.gdtf", test::readFile(dir / "turned.gdtf")}});
+  ASSERT_TRUE(b.result.ok()) << b.result.error().str();
+  EXPECT_TRUE(b.warned("turned.gdtf: description.xml line "));
+  EXPECT_TRUE(b.warned("the beam does not point along the fixture's -Z at rest"));
+  ASSERT_EQ(b.result->show.fixtures.size(), 1u);
+  const FixtureDef& f = b.result->show.fixtures[0];
+  const glm::mat3 r = glm::mat3(glm::eulerAngleZYX(glm::radians(f.rotationDeg.z), glm::radians(f.rotationDeg.y), glm::radians(f.rotationDeg.x)));
+  EXPECT_LT(glm::length(r * glm::vec3(0, -1, 0) - glm::vec3(0, 0, -1)), 1e-4f);
+}
+
 TEST(MvrBroken, BadFieldsAreWarnedNotFatal) {
   const std::string xml = sceneXml(fixtureXml("A", "par", "banana", "{1,0,0}{0,1,0}{oops}{0,0,0}") +
                                    "<Mystery name=\"m\"/>\n<SceneObject name=\"S\" uuid=\"s\"><Geometries><Geometry3D fileName=\"absent.3ds\"/>"
@@ -414,6 +519,28 @@ TEST(MvrBroken, SymbolExplosionIsBounded) {
   ASSERT_TRUE(b.result.ok()) << b.result.error().str();
   EXPECT_TRUE(b.warned("geometry placements; the rest is left out"));
   EXPECT_TRUE(b.warned("none.3ds"));
+}
+
+// The camera's rays keep at most 2 million placed triangles: 2100 placements of the theatre's
+// 972-triangle chandelier (2.04 million) import whole, with a warning that the camera saw the
+// first 2 million only.
+TEST(MvrBroken, PlacedTrianglesForTheCameraAreBounded) {
+  const std::string chandelier = "f9af9d23-3867-48c1-b7f3-6ae621dd6021.glb";
+  auto theatre = ZipArchive::open(kMvrDir / "scene_objects.mvr");
+  ASSERT_TRUE(theatre.ok());
+  auto mesh = theatre->read(chandelier);
+  ASSERT_TRUE(mesh.ok());
+  std::string geometries;
+  for (int i = 0; i < 2100; ++i)
+    geometries += "<Geometry3D fileName=\"" + chandelier + "\"><Matrix>{1,0,0}{0,1,0}{0,0,1}{" + std::to_string(3000 * (i % 50)) +
+                  "," + std::to_string(3000 * (i / 50)) + ",0}</Matrix></Geometry3D>\n";
+  const std::string xml = sceneXml(fixtureXml("A", "par.gdtf", "1") + "<SceneObject name=\"S\" uuid=\"s\"><Geometries>" + geometries +
+                                   "</Geometries></SceneObject>\n");
+  Built b(true, {{"GeneralSceneDescription.xml", xml}, {"par.gdtf", gdtfBytes()}, {chandelier, std::string(mesh->begin(), mesh->end())}});
+  ASSERT_TRUE(b.result.ok()) << b.result.error().str();
+  EXPECT_EQ(b.result->geometryInstances, 2100);
+  EXPECT_TRUE(b.warned("the venue places more than 2000000 triangles; the overview camera is placed against the first ones only"));
+  ASSERT_EQ(b.result->show.cameras.size(), 1u);
 }
 
 TEST(MvrBroken, RefusesToOverwriteAnExistingShow) {
