@@ -1,4 +1,5 @@
 // haze bench [--fixtures N] [--width W --height H] [--quality Q] [--frames K] [--compare-reference] --json
+//            [--planes N] [--scatter-divisor D] [--min-samples M] (override the preset's values)
 // Renders the bench scene (app/bench_scene.*) headless and reports the median time per frame
 // and per pass, with shadow and light maps cached after the first (cold) frame, as while a
 // designer looks at a cue; the cold frame is reported apart.
@@ -8,6 +9,8 @@
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
 
 #include <nlohmann/json.hpp>
 
@@ -40,6 +43,14 @@ double meanRelativeError(const ImageRGB& gpu, const ImageRGB& ref) {
         ++n;
       }
   return n ? sum / static_cast<double>(n) : 0.0;
+}
+
+// CPU time of the whole process (llvmpipe's render threads included): on a shared, busy machine
+// this moves far less than the wall clock when other jobs take the cores.
+double processCpuMs() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return (u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3 + (u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-3;
 }
 
 double median(std::vector<double> v) {
@@ -125,6 +136,7 @@ int runBench(const Args& args) {
   int fixtures = 16, width = 1280, height = 720, frames = 5;
   std::string quality = "default";
   bool json = false, compare = false, study = false;
+  int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto intValue = [&](int& dst, int lo, int hi) {
@@ -141,24 +153,35 @@ int runBench(const Args& args) {
     else if (a == "--json") json = true;
     else if (a == "--compare-reference") compare = true;
     else if (a == "--study") study = true;
+    else if (a == "--planes") { if (!intValue(planes, 1, 4096)) return fail("--planes needs 1..4096"); }
+    else if (a == "--scatter-divisor") { if (!intValue(divisor, 1, 8)) return fail("--scatter-divisor needs 1..8"); }
+    else if (a == "--min-samples") { if (!intValue(minSamples, 0, 256)) return fail("--min-samples needs 0..256"); }
     else return fail("unknown option '" + a + "' (usage: haze bench [--fixtures N] [--width W --height H] "
-                     "[--quality Q] [--frames K] [--compare-reference] [--json])");
+                     "[--quality Q] [--frames K] [--planes N] [--scatter-divisor D] [--min-samples M] "
+                     "[--compare-reference] [--json])");
   }
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
+  if (*q == Quality::Reference)
+    return fail("--quality reference is the CPU integrator: time it against a GPU preset with --compare-reference");
   auto ctx = createHeadlessContext();
   if (!ctx) return fail(ctx.error().str());
   if (study) return runStudy(width, height);
   const Venue venue = benchVenue();
   const FrameState frame = benchFrame(fixtures);
-  auto renderer = Renderer::create(venue, renderSettingsFor(*q, width, height));
+  RenderSettings settings = renderSettingsFor(*q, width, height);
+  if (planes > 0) settings.planes = planes;
+  if (divisor > 0) settings.scatterDivisor = divisor;
+  if (minSamples >= 0) settings.minSamplesPerChord = minSamples;
+  auto renderer = Renderer::create(venue, settings);
   if (!renderer) return fail(renderer.error().str());
 
-  std::vector<double> total, shadow, surfaces, beams, post;
+  std::vector<double> total, cpu, shadow, surfaces, beams, post;
   double coldMs = 0.0;
-  uint64_t fragments = 0;
+  uint64_t fragments = 0, scattering = 0;
   for (int f = 0; f <= frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = processCpuMs();
     (*renderer)->render(frame);
     (void)(*renderer)->readDisplay({});
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -168,11 +191,13 @@ int runBench(const Args& args) {
       continue;
     }
     total.push_back(ms);
+    cpu.push_back(processCpuMs() - cpu0);
     shadow.push_back(t.shadowMapsMs);
     surfaces.push_back(t.surfacesMs);
     beams.push_back(t.beamsMs);
     post.push_back(t.postMs);
     fragments = t.planeFragments;
+    scattering = t.scatteringFragments;
   }
   const RenderSettings rs = (*renderer)->settings();
   nlohmann::ordered_json out;
@@ -183,13 +208,16 @@ int runBench(const Args& args) {
   out["quality"] = quality;
   out["planes_per_beam"] = rs.planes;
   out["scatter_divisor"] = rs.scatterDivisor;
+  out["min_samples_per_chord"] = rs.minSamplesPerChord;
   out["jittered_frames"] = rs.frames;
   out["frames_measured"] = frames;
   out["median_frame_ms"] = median(total);
+  out["median_frame_cpu_ms"] = median(cpu);
   out["cold_frame_ms"] = coldMs;
   out["pass_ms"] = {{"shadow_maps", median(shadow)}, {"surfaces", median(surfaces)}, {"planes", median(beams)},
                     {"post", median(post)}};
   out["plane_fragments"] = fragments;
+  out["scattering_fragments"] = scattering;
   if (compare) {
     const ImageRGB gpu = (*renderer)->readRadiance();
     const auto t0 = std::chrono::steady_clock::now();
@@ -202,11 +230,13 @@ int runBench(const Args& args) {
   if (json) {
     std::printf("%s\n", out.dump(2).c_str());
   } else {
-    std::printf("%d fixtures at %dx%d, %s: %.1f ms per frame (median of %d; cold %.1f ms)\n", fixtures, width, height,
-                quality.c_str(), median(total), frames, coldMs);
-    std::printf("  shadow maps %.1f  surfaces %.1f  planes %.1f  post %.1f ms; %llu plane fragments\n",
-                median(shadow), median(surfaces), median(beams), median(post),
-                static_cast<unsigned long long>(fragments));
+    std::printf("%d fixtures at %dx%d, %s (%d planes, scatter 1/%d, %d samples per chord): %.1f ms per frame "
+                "(median of %d; cold %.1f ms)\n", fixtures, width, height, quality.c_str(), rs.planes,
+                rs.scatterDivisor, rs.minSamplesPerChord, median(total), frames, coldMs);
+    std::printf("  shadow maps %.1f  surfaces %.1f  planes %.1f  post %.1f ms; %llu plane fragments (%llu "
+                "scattering); %.0f ms CPU per frame\n", median(shadow), median(surfaces), median(beams),
+                median(post), static_cast<unsigned long long>(fragments),
+                static_cast<unsigned long long>(scattering), median(cpu));
     if (compare)
       std::printf("  reference %.0f ms, mean relative error %.4f, %.0fx faster\n", out["reference_ms"].get<double>(),
                   out["mean_relative_error"].get<double>(), out["speedup_vs_reference"].get<double>());

@@ -1,5 +1,5 @@
 // haze render SHOW [--cue N | --all-cues] [--at S] [--list NAME] [--camera NAME]
-//                  [--width W --height H] [--quality Q] [--exposure EV] -o OUT.(png|pfm) | DIR/
+//                  [--width W --height H] [--quality Q] [--exposure EV] [--bloom F] -o OUT.(png|pfm) | DIR/
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
@@ -16,8 +16,9 @@ namespace {
 constexpr const char* kUsage =
     "usage: haze render SHOW [--cue N | --all-cues] [--at S] [--list NAME] [--camera NAME]\n"
     "                   [--width W --height H] [--quality draft|default|high|reference] [--exposure EV]\n"
-    "                   -o OUT.png|OUT.pfm (one image) | -o DIR/ (with --all-cues)\n"
-    "Without --cue the first cue is rendered; --at S renders S seconds after its GO.\n";
+    "                   [--bloom F] -o OUT.png|OUT.pfm (one image) | -o DIR/ (with --all-cues)\n"
+    "Without --cue the first cue is rendered; --at S renders S seconds after its GO.\n"
+    "--bloom F spreads the fraction F (0..1) of the light as lens glare in PNGs; PFMs stay radiometric.\n";
 
 int fail(const std::string& line) {
   std::fprintf(stderr, "haze render: %s\n", line.c_str());
@@ -33,7 +34,7 @@ bool parseNumber(const std::string& s, double& out) {
 
 int runRender(const Args& args) {
   std::string showPath, cue, list, out, camera, quality = "default";
-  double at = -1.0, exposure = 0.0, width = 1280, height = 720;
+  double at = -1.0, exposure = 0.0, bloom = 0.0, width = 1280, height = 720;
   bool allCues = false;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -64,6 +65,8 @@ int runRender(const Args& args) {
       if (!value(quality)) return fail("--quality needs draft|default|high|reference");
     } else if (a == "--exposure") {
       if (!number(exposure)) return fail("--exposure needs a number of EV");
+    } else if (a == "--bloom") {
+      if (!number(bloom) || bloom < 0.0 || bloom > 1.0) return fail("--bloom needs a fraction 0..1");
     } else if (a == "-o" || a == "--output") {
       if (!value(out)) return fail("-o needs a file or a folder");
     } else if (a == "--help" || a == "-h") {
@@ -99,7 +102,8 @@ int runRender(const Args& args) {
   auto renderCue = [&](size_t index, const std::filesystem::path& file) -> bool {
     const StageState state = at >= 0 ? stateAt(*show, *profiles, *cueList, index, at)
                                      : trackedState(*show, *profiles, *cueList, index);
-    const Status s = (*session)->renderToFile(*show, *profiles, state, file, static_cast<float>(exposure));
+    const Status s = (*session)->renderToFile(*show, *profiles, state, file, static_cast<float>(exposure),
+                                                    static_cast<float>(bloom));
     if (!s) {
       fail(s.error().str());
       return false;

@@ -21,7 +21,7 @@ class RenderSession {
   static Result<std::unique_ptr<RenderSession>> open(const Show& show, const RenderJobOptions& options);
 
   Status renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
-                      const std::filesystem::path& out, float exposureEv = 0.0f);
+                      const std::filesystem::path& out, float exposureEv = 0.0f, float bloom = 0.0f);
   Renderer& renderer() { return *renderer_; }
   const Venue& venue() const { return venue_; }
 

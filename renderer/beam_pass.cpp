@@ -7,6 +7,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "renderer/beam_footprint.h"
+#include "renderer/camera_uniforms.h"
 #include "renderer/gl/program.h"
 
 namespace haze {
@@ -14,77 +16,7 @@ namespace {
 
 constexpr GLuint kSceneDepthUnit = 5, kScatterUnit = 6, kScatterDepthUnit = 7;
 
-struct CameraBasis {
-  glm::vec3 forward, right, up;
-  float tanY, tanX;
-};
-
-CameraBasis basis(const CameraState& c, float aspect) {
-  CameraBasis b;
-  b.forward = glm::normalize(c.target - c.position);
-  b.right = glm::normalize(glm::cross(b.forward, c.up));
-  b.up = glm::cross(b.right, b.forward);
-  b.tanY = std::tan(glm::radians(c.fovYDeg) * 0.5f);
-  b.tanX = b.tanY * aspect;
-  return b;
-}
-
-void setCameraUniforms(GLuint prog, const CameraState& c, float aspect) {
-  const CameraBasis b = basis(c, aspect);
-  glProgramUniform3fv(prog, 20, 1, glm::value_ptr(c.position));
-  glProgramUniform3fv(prog, 21, 1, glm::value_ptr(b.forward));
-  const glm::vec3 rt = b.right * b.tanX, ut = b.up * b.tanY;
-  glProgramUniform3fv(prog, 22, 1, glm::value_ptr(rt));
-  glProgramUniform3fv(prog, 23, 1, glm::value_ptr(ut));
-  glProgramUniform2f(prog, 24, c.nearM, c.farM);
-}
-
 }  // namespace
-
-BeamFootprint beamFootprint(const BeamState& beam, const CameraState& camera, float aspect, float coneLengthM) {
-  BeamFootprint fp;
-  const CameraBasis b = basis(camera, aspect);
-  const float cutoff = beam.optics.cutoffHalfAngleRad();
-  // The cone's hull: the lens and its cap at coneLengthM. 16 points on a circle widened by
-  // 1 / cos(pi / 16) circumscribe the cap, so the projected hull contains the cone.
-  const float capRadius = coneLengthM * std::tan(cutoff) / std::cos(3.14159265f / 16.0f);
-  const glm::vec3 cap = beam.pose.lensPosition + beam.pose.zb * coneLengthM;
-  glm::vec2 lo(1e30f), hi(-1e30f);
-  float zNear = 1e30f, zFar = -1e30f;
-  bool crossesEyePlane = false;
-  auto addPoint = [&](const glm::vec3& p) {
-    const glm::vec3 d = p - camera.position;
-    const float z = glm::dot(d, b.forward);
-    zNear = std::min(zNear, z);
-    zFar = std::max(zFar, z);
-    if (z <= camera.nearM) {
-      crossesEyePlane = true;
-      return;
-    }
-    const glm::vec2 ndc(glm::dot(d, b.right) / (z * b.tanX), glm::dot(d, b.up) / (z * b.tanY));
-    lo = glm::min(lo, ndc);
-    hi = glm::max(hi, ndc);
-  };
-  addPoint(beam.pose.lensPosition);
-  for (int i = 0; i < 16; ++i) {
-    const float a = static_cast<float>(i) * 3.14159265f / 8.0f;
-    addPoint(cap + capRadius * (std::cos(a) * beam.pose.xb + std::sin(a) * beam.pose.yb));
-  }
-  if (zFar <= camera.nearM) return fp;  // wholly behind the camera
-  if (crossesEyePlane) {
-    lo = glm::vec2(-1.0f);
-    hi = glm::vec2(1.0f);
-  }
-  lo = glm::max(lo, glm::vec2(-1.0f));
-  hi = glm::min(hi, glm::vec2(1.0f));
-  if (lo.x >= hi.x || lo.y >= hi.y) return fp;
-  fp.visible = true;
-  fp.rectNdc = glm::vec4(lo, hi);
-  fp.zNear = std::max(zNear, camera.nearM);
-  fp.zFar = std::min(zFar, camera.farM);
-  fp.visible = fp.zFar > fp.zNear;
-  return fp;
-}
 
 Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings& settings) {
   BeamPass p;
@@ -131,11 +63,12 @@ Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings&
   p.lowDepthFbo_ = gl::Framebuffer("scatter_depth_fbo");
   glNamedFramebufferTexture(p.lowDepthFbo_.id(), GL_COLOR_ATTACHMENT0, p.lowDepth_.id(), 0);
   p.vao_ = gl::VertexArray("planes_vao");
+  p.scattered_ = gl::SamplesQuery("scattering_fragments");
   return p;
 }
 
-uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, float coneLengthM,
-                          GLuint sceneDepth, GLuint radianceFbo, bool accumulate) {
+uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, GLuint sceneDepth,
+                          GLuint radianceFbo, bool accumulate) {
   const MediumState& med = frame.medium;
   if (med.scattering <= 0.0f || frame.beams.empty()) return 0;
   const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
@@ -177,28 +110,42 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, f
   glProgramUniform1f(prog, 26, med.g);
   beams.bind(0, 1, 2);
 
+  // Each cone only as far as it can light anything (its shadow map's farthest surface).
+  std::vector<BeamFootprint> footprints(frame.beams.size());
+  for (size_t i = 0; i < frame.beams.size(); ++i) {
+    const BeamOptics& o = frame.beams[i].optics;
+    if (o.dimmer <= 0.0f || o.color == glm::vec3(0.0f)) continue;  // dark: adds nothing anywhere
+    footprints[i] = beamFootprint(frame.beams[i], frame.camera, aspect, beams.reachM(static_cast<int>(i)));
+  }
+
   uint64_t fragments = 0;
+  glBeginQuery(GL_SAMPLES_PASSED, scattered_.id());
   for (int f = 0; f < settings_.frames; ++f) {
     // Golden-ratio steps give well-spread offsets for any number of accumulated frames.
     const float jitter = std::fmod(static_cast<float>(accumulated_) * 0.6180339887f, 1.0f);
     glProgramUniform1f(prog, 6, jitter);
     for (size_t i = 0; i < frame.beams.size(); ++i) {
-      const BeamFootprint fp = beamFootprint(frame.beams[i], frame.camera, aspect, coneLengthM);
+      const BeamFootprint& fp = footprints[i];
       if (!fp.visible) continue;
       const float dz = (fp.zFar - fp.zNear) / static_cast<float>(settings_.planes);
       glProgramUniform4fv(prog, 0, 1, glm::value_ptr(fp.rectNdc));
+      if (settings_.lattice == 0) glProgramUniform2fv(prog, 30, fp.vertexCount, glm::value_ptr(fp.polygonNdc[0]));
       glProgramUniform2f(prog, 1, fp.zNear, dz);
       glProgramUniform1i(prog, 2, static_cast<int>(i));
       const int instances = settings_.fused ? 1 : settings_.planes;
-      if (settings_.lattice > 0)
+      double px = 0.0;
+      if (settings_.lattice > 0) {  // the paper's lattice spans the bounding rectangle
         glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * settings_.lattice * settings_.lattice, instances);
-      else
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, instances);
-      const double px = (fp.rectNdc.z - fp.rectNdc.x) * 0.5 * lowW_ * (fp.rectNdc.w - fp.rectNdc.y) * 0.5 * lowH_;
+        px = (fp.rectNdc.z - fp.rectNdc.x) * 0.5 * lowW_ * (fp.rectNdc.w - fp.rectNdc.y) * 0.5 * lowH_;
+      } else {
+        glDrawArraysInstanced(GL_TRIANGLE_FAN, 0, fp.vertexCount, instances);
+        px = fp.areaNdc() * 0.25 * lowW_ * lowH_;
+      }
       fragments += static_cast<uint64_t>(px) * static_cast<uint64_t>(instances);
     }
     ++accumulated_;
   }
+  glEndQuery(GL_SAMPLES_PASSED);
 
   // Composite onto the radiance target, averaging the accumulated frames.
   glBindFramebuffer(GL_FRAMEBUFFER, radianceFbo);
@@ -212,6 +159,13 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, f
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_BLEND);
   return fragments;
+}
+
+uint64_t BeamPass::scatteringFragments() const {
+  if (!scattered_) return 0;
+  GLuint64 n = 0;
+  glGetQueryObjectui64v(scattered_.id(), GL_QUERY_RESULT, &n);
+  return n;
 }
 
 }  // namespace haze

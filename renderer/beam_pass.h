@@ -10,6 +10,7 @@
 #include <glm/vec4.hpp>
 
 #include "fixtures/result.h"
+#include "renderer/beam_footprint.h"
 #include "renderer/beam_resources.h"
 #include "renderer/gl/objects.h"
 #include "renderer/scene/frame_state.h"
@@ -33,14 +34,6 @@ struct BeamPassSettings {
   int lattice = 0;
 };
 
-// What a beam covers on screen and in view depth.
-struct BeamFootprint {
-  bool visible = false;
-  glm::vec4 rectNdc{-1, -1, 1, 1};
-  float zNear = 0, zFar = 0;
-};
-BeamFootprint beamFootprint(const BeamState& beam, const CameraState& camera, float aspect, float coneLengthM);
-
 class BeamPass {
  public:
   static Result<BeamPass> create(int width, int height, const BeamPassSettings& settings);
@@ -49,10 +42,13 @@ class BeamPass {
   // accumulate, the scattering of earlier calls is kept and this call's frames (jittered on
   // from frame number firstFrame) are added: progressive refinement while nothing moves.
   // Returns the plane fragments rasterised (footprint pixels times planes), for the bench.
-  uint64_t render(const FrameState& frame, const BeamResources& beams, float coneLengthM, GLuint sceneDepth,
-                  GLuint radianceFbo, bool accumulate = false);
+  uint64_t render(const FrameState& frame, const BeamResources& beams, GLuint sceneDepth, GLuint radianceFbo,
+                  bool accumulate = false);
   const BeamPassSettings& settings() const { return settings_; }
   int accumulatedFrames() const { return accumulated_; }
+  // Of the last render's plane fragments, those that added light (inside a cone, in front of
+  // the scene); the rest were spent on footprint pixels the cones do not cover.
+  uint64_t scatteringFragments() const;
 
  private:
   BeamPassSettings settings_;
@@ -61,6 +57,7 @@ class BeamPass {
   gl::Texture scatter_, lowDepth_;
   gl::Framebuffer scatterFbo_, lowDepthFbo_;
   gl::VertexArray vao_;
+  gl::SamplesQuery scattered_;
   int accumulated_ = 0;
 };
 

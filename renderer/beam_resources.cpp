@@ -13,10 +13,10 @@ namespace {
 
 uint64_t mix(uint64_t h, uint64_t v) { return h ^ (v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2)); }
 
-// Shadow frustum: the beam's cutoff cone, from a near plane close to the lens to the far
-// corner of the venue's bounds.
-glm::mat4 shadowViewProjection(const BeamState& b, const GpuVenue& venue, float cutoffRad) {
-  const glm::vec3 eye = b.pose.lensPosition;
+constexpr float kShadowNearM = 0.02f;
+
+// The distance from the lens to the far corner of the venue's bounds.
+float farthestCornerM(const glm::vec3& eye, const GpuVenue& venue) {
   float farM = 1.0f;
   for (int i = 0; i < 8; ++i) {
     const glm::vec3 c((i & 1) ? venue.boundsMax().x : venue.boundsMin().x,
@@ -24,9 +24,16 @@ glm::mat4 shadowViewProjection(const BeamState& b, const GpuVenue& venue, float 
                       (i & 4) ? venue.boundsMax().z : venue.boundsMin().z);
     farM = std::max(farM, glm::length(c - eye));
   }
+  return farM;
+}
+
+// Shadow frustum: the beam's cutoff cone, from a near plane close to the lens to the far
+// corner of the venue's bounds.
+glm::mat4 shadowViewProjection(const BeamState& b, float farM, float cutoffRad) {
+  const glm::vec3 eye = b.pose.lensPosition;
   const float fov = std::min(2.0f * cutoffRad + glm::radians(2.0f), glm::radians(170.0f));
   const glm::mat4 view = glm::lookAt(eye, eye + b.pose.zb, b.pose.xb);
-  return glm::perspective(fov, 1.0f, 0.02f, farM * 1.05f) * view;
+  return glm::perspective(fov, 1.0f, kShadowNearM, farM) * view;
 }
 
 }  // namespace
@@ -62,10 +69,11 @@ void BeamResources::ensureCapacity(int beams) {
   opticsKeys_.assign(static_cast<size_t>(capacity_), 0);
   shadowKeys_.assign(static_cast<size_t>(capacity_), 0);
   extents_.assign(static_cast<size_t>(capacity_), 1.0f);
+  reachesM_.assign(static_cast<size_t>(capacity_), 1e30f);
 }
 
-void BeamResources::renderShadow(int layer, const glm::mat4& viewProj, const GpuVenue& venue,
-                                 const gl::Program& program) {
+float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float nearM, float farM, float cutoffRad,
+                                  const GpuVenue& venue, const gl::Program& program) {
   glNamedFramebufferTextureLayer(shadowFbo_.id(), GL_DEPTH_ATTACHMENT, shadowMaps_.id(), 0, layer);
   glNamedFramebufferDrawBuffer(shadowFbo_.id(), GL_NONE);
   glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo_.id());
@@ -83,6 +91,20 @@ void BeamResources::renderShadow(int layer, const glm::mat4& viewProj, const Gpu
   venue.bind();
   for (const auto& d : venue.draws()) venue.draw(d);
   glDisable(GL_POLYGON_OFFSET_FILL);
+
+  // The farthest view depth the map sees; a texel at the far plane means light escapes.
+  const int size = settings_.shadowMapSize;
+  depthScratch_.resize(static_cast<size_t>(size) * size);
+  glGetTextureSubImage(shadowMaps_.id(), 0, 0, 0, layer, size, size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                       static_cast<GLsizei>(depthScratch_.size() * sizeof(float)), depthScratch_.data());
+  float maxDepth = 0.0f;
+  for (float d : depthScratch_) maxDepth = std::max(maxDepth, d);
+  if (maxDepth >= 1.0f) return farM;
+  const float zNdc = 2.0f * maxDepth - 1.0f;
+  const float viewZ = 2.0f * nearM * farM / (farM + nearM - zNdc * (farM - nearM));
+  // A point at view depth z and angle a off the axis is z / cos(a) from the lens; a <= cutoff
+  // inside the cone (plus a degree for the frustum's margin).
+  return std::min(farM, viewZ / std::cos(std::min(cutoffRad + glm::radians(1.0f), glm::radians(85.0f))) * 1.01f);
 }
 
 BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& venue,
@@ -105,10 +127,11 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
       opticsKeys_[static_cast<size_t>(i)] = opticsKey;
       ++stats.lightMapsBaked;
     }
-    const glm::mat4 viewProj = shadowViewProjection(b, venue, cutoff);
+    const float farM = farthestCornerM(b.pose.lensPosition, venue) * 1.05f;
+    const glm::mat4 viewProj = shadowViewProjection(b, farM, cutoff);
     const uint64_t shadowKey = mix(mix(b.poseKey, std::hash<float>{}(cutoff)), 2);
     if (shadowKeys_[static_cast<size_t>(i)] != shadowKey) {
-      renderShadow(i, viewProj, venue, shadowProgram);
+      reachesM_[static_cast<size_t>(i)] = renderShadow(i, viewProj, kShadowNearM, farM, cutoff, venue, shadowProgram);
       shadowKeys_[static_cast<size_t>(i)] = shadowKey;
       ++stats.shadowMapsRendered;
     }

@@ -48,10 +48,16 @@ class BeamResources {
   int count() const { return static_cast<int>(gpuBeams_.size()); }
   const std::vector<GpuBeam>& beams() const { return gpuBeams_; }
   const BeamResourceSettings& settings() const { return settings_; }
+  // How far from its lens beam i can light anything: the farthest surface its shadow map sees
+  // inside the cone (the venue's far corner when some of the cone escapes to the sky). Beyond
+  // it the cone is in shadow, so the planes pass need not cover it.
+  float reachM(int i) const { return reachesM_[static_cast<size_t>(i)]; }
 
  private:
   void ensureCapacity(int beams);
-  void renderShadow(int layer, const glm::mat4& viewProj, const GpuVenue& venue, const gl::Program& program);
+  // Renders a shadow map and returns the beam's reach (see reachM).
+  float renderShadow(int layer, const glm::mat4& viewProj, float nearM, float farM, float cutoffRad,
+                     const GpuVenue& venue, const gl::Program& program);
 
   BeamResourceSettings settings_;
   int capacity_ = 0;
@@ -62,6 +68,8 @@ class BeamResources {
   std::vector<uint64_t> opticsKeys_;   // per layer, what is baked there
   std::vector<uint64_t> shadowKeys_;
   std::vector<float> extents_;
+  std::vector<float> reachesM_;
+  std::vector<float> depthScratch_;
   std::vector<GpuBeam> gpuBeams_;
 };
 

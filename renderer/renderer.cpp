@@ -1,5 +1,6 @@
 #include "renderer/renderer.h"
 
+#include <cassert>
 #include <chrono>
 #include <algorithm>
 #include <cmath>
@@ -13,11 +14,13 @@
 #include "renderer/beam_resources.h"
 #include "renderer/gl/program.h"
 #include "renderer/gpu_venue.h"
+#include "renderer/light_tiles.h"
 
 namespace haze {
 namespace {
 
 constexpr GLuint kBeamsBinding = 0, kLightMapUnit = 1, kShadowMapUnit = 2, kBaseTexUnit = 3, kEmissiveTexUnit = 4;
+constexpr GLuint kSceneDepthUnit = 5, kTileMasksBinding = 3;
 
 double msSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -35,12 +38,14 @@ glm::mat4 cameraViewProjection(const CameraState& c, int width, int height) {
 struct Renderer::Impl {
   GpuVenue venue;
   BeamResources beams;
-  gl::Program shadowProgram, surfaceProgram, postProgram;
+  gl::Program shadowProgram, surfaceProgram, postProgram, bloomPostProgram;
   gl::Texture radiance, depth, display;
+  gl::Sampler mipSampler{"radiance_mips"};  // for bloom: trilinear over the radiance's mip levels
   gl::Framebuffer sceneFbo{"scene_fbo"}, displayFbo{"display_fbo"};
   // The radiance target without its depth, for passes that read the scene depth as a texture.
   gl::Framebuffer radianceOnlyFbo{"radiance_only_fbo"};
   BeamPass beamPass;
+  LightTiles tiles;
   gl::VertexArray emptyVao{"fullscreen_vao"};
 
   Impl(const Venue& v, const RenderSettings& s)
@@ -61,6 +66,10 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   if (!surface) return surface.error();
   auto post = gl::buildProgram({.label = "post", .vertex = "fullscreen.vert.glsl", .fragment = "post.frag.glsl"});
   if (!post) return post.error();
+  auto bloomPost = gl::buildProgram(
+      {.label = "post_bloom", .vertex = "fullscreen.vert.glsl", .fragment = "post.frag.glsl", .defines = {"BLOOM"}});
+  if (!bloomPost) return bloomPost.error();
+  impl->bloomPostProgram = std::move(*bloomPost);
   impl->shadowProgram = std::move(*shadow);
   impl->surfaceProgram = std::move(*surface);
   impl->postProgram = std::move(*post);
@@ -71,10 +80,21 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
                                 .lattice = settings.lattice});
   if (!pass) return pass.error();
   impl->beamPass = std::move(*pass);
+  auto tiles = LightTiles::create(settings.width, settings.height);
+  if (!tiles) return tiles.error();
+  impl->tiles = std::move(*tiles);
 
   const int w = settings.width, h = settings.height;
   impl->radiance = gl::Texture(GL_TEXTURE_2D, "radiance");
-  glTextureStorage2D(impl->radiance.id(), 1, GL_RGBA32F, w, h);
+  // Mip levels for bloom only (made on demand); everything else uses level 0.
+  int levels = 1;
+  while ((std::max(w, h) >> levels) > 0) ++levels;
+  glTextureStorage2D(impl->radiance.id(), levels, GL_RGBA32F, w, h);
+  glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MAX_LEVEL, levels - 1);
+  glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+  glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   impl->depth = gl::Texture(GL_TEXTURE_2D, "scene_depth");
@@ -130,6 +150,13 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
 
+  m.beams.bind(kBeamsBinding, kLightMapUnit, kShadowMapUnit);
+  const bool tiled = settings_.tiledSurfaces && m.beams.count() > 0;
+  if (tiled) {
+    glBindTextureUnit(kSceneDepthUnit, m.depth.id());
+    m.tiles.update(frame.camera, m.beams.count());
+    m.tiles.bind(kTileMasksBinding);
+  }
   const GLuint prog = m.surfaceProgram.id();
   glUseProgram(prog);
   glProgramUniformMatrix4fv(prog, 0, 1, GL_FALSE, glm::value_ptr(viewProj));
@@ -137,7 +164,8 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glProgramUniform1f(prog, 2, sigmaT);
   glProgramUniform3fv(prog, 3, 1, glm::value_ptr(med.ambient));
   glProgramUniform1i(prog, 8, m.beams.count());
-  m.beams.bind(kBeamsBinding, kLightMapUnit, kShadowMapUnit);
+  glProgramUniform1i(prog, 9, tiled ? m.tiles.columns() : 0);
+  glProgramUniform1i(prog, 10, m.tiles.maskWords());
   m.venue.bind();
   for (const GpuVenue::Draw& d : m.venue.draws()) {
     const GpuVenue::GpuMaterial& mat = m.venue.materials()[static_cast<size_t>(d.material)];
@@ -155,18 +183,10 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   times_.surfacesMs = msSince(t0);
 
   t0 = std::chrono::steady_clock::now();
-  // Light cones end where they leave the venue: bound them by the farthest corner of its box.
-  float coneLength = 1.0f;
-  for (const BeamState& b : frame.beams)
-    for (int i = 0; i < 8; ++i) {
-      const glm::vec3 c((i & 1) ? m.venue.boundsMax().x : m.venue.boundsMin().x,
-                        (i & 2) ? m.venue.boundsMax().y : m.venue.boundsMin().y,
-                        (i & 4) ? m.venue.boundsMax().z : m.venue.boundsMin().z);
-      coneLength = std::max(coneLength, glm::length(c - b.pose.lensPosition));
-    }
   times_.planeFragments =
-      m.beamPass.render(frame, m.beams, coneLength, m.depth.id(), m.radianceOnlyFbo.id(), accumulate);
+      m.beamPass.render(frame, m.beams, m.depth.id(), m.radianceOnlyFbo.id(), accumulate);
   times_.accumulatedFrames = m.beamPass.accumulatedFrames();
+  times_.scatteringFragments = m.beamPass.scatteringFragments();
   glFinish();
   times_.beamsMs = msSince(t0);
 }
@@ -185,6 +205,15 @@ ImageRGB Renderer::readRadiance() const {
   return img;
 }
 
+void Renderer::setRadiance(const ImageRGB& image) {
+  const int w = settings_.width, h = settings_.height;
+  assert(image.width == w && image.height == h && "setRadiance needs an image of the renderer's size");
+  std::vector<glm::vec4> rgba(static_cast<size_t>(w) * h);
+  for (int y = 0; y < h; ++y)  // GL's row 0 is the bottom
+    for (int x = 0; x < w; ++x) rgba[static_cast<size_t>(h - 1 - y) * w + x] = glm::vec4(image.at(x, y), 1.0f);
+  glTextureSubImage2D(impl_->radiance.id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
+}
+
 void Renderer::drawDisplay(const DisplaySettings& display, unsigned int framebuffer, int x, int y, int width,
                            int height) {
   Impl& m = *impl_;
@@ -193,11 +222,20 @@ void Renderer::drawDisplay(const DisplaySettings& display, unsigned int framebuf
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
-  glUseProgram(m.postProgram.id());
-  glProgramUniform1f(m.postProgram.id(), 0, std::exp2(display.exposureEv) / DisplaySettings::kKeyNits);
+  const float bloom = std::clamp(display.bloom, 0.0f, 1.0f);
+  const GLuint prog = bloom > 0.0f ? m.bloomPostProgram.id() : m.postProgram.id();
+  glUseProgram(prog);
+  glProgramUniform1f(prog, 0, std::exp2(display.exposureEv) / DisplaySettings::kKeyNits);
+  if (bloom > 0.0f) {
+    glProgramUniform1f(prog, 1, bloom);
+    glGenerateTextureMipmap(m.radiance.id());
+  }
   glBindTextureUnit(0, m.radiance.id());
+  glBindTextureUnit(1, m.radiance.id());
+  glBindSampler(1, m.mipSampler.id());
   glBindVertexArray(m.emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindSampler(1, 0);
 }
 
 std::vector<unsigned char> Renderer::readDisplay(const DisplaySettings& display) {

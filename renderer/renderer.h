@@ -26,6 +26,9 @@ struct RenderSettings {
   bool fusedPlanes = true;  // see BeamPassSettings::fused
   int minSamplesPerChord = 8;
   int lattice = 0;          // see BeamPassSettings::lattice
+  // Surfaces loop only over the beams that reach their 16x16 tile (renderer/light_tiles.h);
+  // off, every pixel tries every beam (same image, for tests and the bench).
+  bool tiledSurfaces = true;
 };
 
 struct DisplaySettings {
@@ -33,12 +36,16 @@ struct DisplaySettings {
   // 50 cd/m^2 maps to 1 (a lit stage deck), so cues compare at one fixed exposure.
   float exposureEv = 0.0f;
   static constexpr float kKeyNits = 50.0f;
+  // Lens glare around bright beams and lamps: the fraction of the light spread over a wide
+  // kernel (0 = off, 0.02-0.1 looks like a camera). Display only; readRadiance never has it.
+  float bloom = 0.0f;
 };
 
 struct PassTimes {
   double shadowMapsMs = 0, surfacesMs = 0, beamsMs = 0, postMs = 0;
   int shadowMapsRendered = 0, lightMapsBaked = 0;
-  uint64_t planeFragments = 0;
+  uint64_t planeFragments = 0;       // footprint pixels times planes (or walks, when fused)
+  uint64_t scatteringFragments = 0;  // of those, the ones that added light
   int accumulatedFrames = 0;
 };
 
@@ -52,6 +59,9 @@ class Renderer {
   void render(const FrameState& frame, bool accumulate = false);
   // The radiometric image of the last render, row 0 at the top.
   ImageRGB readRadiance() const;
+  // Replaces the radiometric image with one made elsewhere (the CPU reference), so it goes
+  // through the same display encoding. The image must have the renderer's size.
+  void setRadiance(const ImageRGB& image);
   // The display encoding (8-bit sRGB, row 0 at the top) of the last render.
   std::vector<unsigned char> readDisplay(const DisplaySettings& display);
   // Draws the display encoding of the last render into the current framebuffer's viewport

@@ -35,17 +35,18 @@ void main() {
   float zMax = min(uDepthRange.x + dz * float(uPlanes), zScene);
   vec2 seg = coneInterval(uEye, v, b.lensPos.xyz, b.zb.xyz, b.lensPos.w * b.lensPos.w, zMin, zMax);
   if (seg.y <= seg.x) discard;
-  // A ray that crosses the cone between few planes (a beam seen from the side) gets the plane
-  // lattice refined by halving, dz / 2^k, until at least uMinSamples planes fall on its chord.
-  float crossings = (seg.y - seg.x) / dz;
-  if (crossings < float(uMinSamples)) {
-    int k = min(int(ceil(log2(float(uMinSamples) / max(crossings, 1e-3)))), 8);
-    dz = dz / float(1 << k);
+  // A ray that crosses the cone between few planes (a beam seen from the side) gets its chord
+  // split into uMinSamples equal strata instead, one jittered sample in each.
+  float zBase = uDepthRange.x;
+  if ((seg.y - seg.x) < float(uMinSamples) * dz) {
+    dz = (seg.y - seg.x) / float(uMinSamples);
+    zBase = seg.x;
   }
-  int k0 = int(ceil((seg.x - uDepthRange.x) / dz - xi));
-  int k1 = int(floor((seg.y - uDepthRange.x) / dz - xi));
+  int k0 = int(ceil((seg.x - zBase) / dz - xi));
+  int k1 = int(floor((seg.y - zBase) / dz - xi));
   vec3 L = vec3(0.0);
-  for (int k = k0; k <= k1; ++k) L += scatterSample(b, v, len, uDepthRange.x + (float(k) + xi) * dz);
+  BeamRay ray = beamRay(b, v, len);
+  for (int k = k0; k <= k1; ++k) L += scatterAt(b, ray, zBase + (float(k) + xi) * dz);
   if (L == vec3(0.0)) discard;
   outScatter = vec4(L * dz * len, 0.0);
 #else

@@ -2,7 +2,8 @@
 // zNear + (k + jitter) * dz of one beam, drawn only over the beam's screen footprint.
 // LATTICE: the paper's own form: the plane is a grid of uLattice cells whose corners (the
 // lattice points) evaluate the in-scattering, and the rasteriser interpolates between them.
-layout(location = 0) uniform vec4 uRectNdc;      // footprint: x0, y0, x1, y1 in NDC
+layout(location = 0) uniform vec4 uRectNdc;      // footprint's bounding rectangle: x0, y0, x1, y1 in NDC
+layout(location = 30) uniform vec2 uPolygonNdc[24];  // footprint, a convex polygon (triangle fan)
 flat out int vPlane;
 
 #ifdef LATTICE
@@ -18,10 +19,10 @@ void main() {
   const ivec2 corners[6] = ivec2[6](ivec2(0, 0), ivec2(1, 0), ivec2(1, 1), ivec2(0, 0), ivec2(1, 1), ivec2(0, 1));
   ivec2 ij = ivec2(cell % uLattice.x, cell / uLattice.x) + corners[c];
   vec2 corner = vec2(ij) / vec2(uLattice);
-#else
-  vec2 corner = vec2(gl_VertexID & 1, (gl_VertexID >> 1) & 1);
-#endif
   vec2 p = mix(uRectNdc.xy, uRectNdc.zw, corner);
+#else
+  vec2 p = uPolygonNdc[gl_VertexID];
+#endif
   vPlane = gl_InstanceID;
 #ifdef LATTICE
   vec3 v = eyeRay(p);

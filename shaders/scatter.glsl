@@ -25,3 +25,47 @@ vec3 scatterSample(Beam b, vec3 v, float len, float z) {
   float t = z * len;
   return uSigmaS * phaseFunction(dot(wl, -v / len)) * vis * I * exp(-uSigmaT * (r + t)) / (r * r);
 }
+
+// The same integrand along one eye ray, with what is linear in the view depth z set up once per
+// ray: x(z) - lens, the light-map projections and the shadow map's clip coordinates are all
+// a + z * b, so a sample costs a few multiply-adds, one light-map and one shadow-map lookup.
+struct BeamRay {
+  vec3 d0, d1;   // x - lens
+  vec3 p0, p1;   // (x - lens) . (xb, yb, zb)
+  vec4 c0, c1;   // shadow clip coordinates
+  float q0, q1;  // (x - lens) . (-v / len)
+  float len;
+};
+
+BeamRay beamRay(Beam b, vec3 v, float len) {
+  BeamRay s;
+  s.d0 = uEye - b.lensPos.xyz;
+  s.d1 = v;
+  mat3 frame = transpose(mat3(b.xb.xyz, b.yb.xyz, b.zb.xyz));
+  s.p0 = frame * s.d0;
+  s.p1 = frame * v;
+  s.c0 = b.shadowViewProj * vec4(uEye, 1.0);
+  s.c1 = b.shadowViewProj * vec4(v, 0.0);
+  s.q0 = -dot(s.d0, v) / len;
+  s.q1 = -dot(v, v) / len;
+  s.len = len;
+  return s;
+}
+
+vec3 scatterAt(Beam b, BeamRay s, float z) {
+  vec3 d = s.d0 + z * s.d1;
+  float r2 = max(dot(d, d), 1e-12);
+  float r = sqrt(r2);
+  vec3 p = s.p0 + z * s.p1;
+  if (p.z <= b.lensPos.w * r) return vec3(0.0);  // outside the cone
+  float cd = texture(uLightMaps, vec3(p.xy / p.z * b.xb.w * 0.5 + 0.5, b.yb.w)).r;
+  vec4 c = s.c0 + z * s.c1;
+  float vis = 1.0;
+  if (c.w > 0.0) {
+    vec3 sc = c.xyz / c.w * 0.5 + 0.5;
+    if (all(greaterThanEqual(sc.xy, vec2(0.0))) && all(lessThanEqual(sc.xy, vec2(1.0))))
+      vis = texture(uShadowMaps, vec4(sc.xy, b.zb.w, sc.z));
+  }
+  float cosA = (s.q0 + z * s.q1) / r;
+  return uSigmaS * phaseFunction(cosA) * vis * cd * b.color.rgb * exp(-uSigmaT * (r + z * s.len)) / r2;
+}

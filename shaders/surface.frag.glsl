@@ -14,10 +14,28 @@ layout(location = 5) uniform vec3 uEmissive;
 layout(location = 6) uniform int uHasBaseTexture;
 layout(location = 7) uniform int uHasEmissiveTexture;
 layout(location = 8) uniform int uBeamCount;
+layout(location = 9) uniform int uTileColumns;  // 0: no tile masks, every beam is tried
+layout(location = 10) uniform int uMaskWords;   // 32-bit words per tile (shaders/light_tiles.comp.glsl)
+layout(std430, binding = 3) readonly buffer TileMasks { uint tileMasks[]; };
 layout(binding = 3) uniform sampler2D uBaseTexture;
 layout(binding = 4) uniform sampler2D uEmissiveTexture;
 
 layout(location = 0) out vec4 outRadiance;
+
+// Irradiance from one beam at this surface point (facing n): I_eff V cos exp(-sigma_t r) / r^2.
+vec3 beamIrradiance(Beam b, vec3 n) {
+  // Most beams miss most pixels: test the cone before anything else.
+  vec3 d = vPosition - b.lensPos.xyz;
+  if (dot(d, b.zb.xyz) <= b.lensPos.w * length(d)) return vec3(0.0);
+  vec3 wl;
+  float r;
+  vec3 I = beamIntensity(b, vPosition, wl, r);
+  float cosine = dot(n, -wl);
+  if (cosine <= 0.0 || I == vec3(0.0)) return vec3(0.0);
+  // Shadow lookups from a point nudged off the surface, by about a shadow texel at distance r.
+  float v = beamVisibility(b, vPosition + n * (0.0015 * r));
+  return I * (v * cosine * exp(-uSigmaT * r) / (r * r));
+}
 
 void main() {
   vec3 toEye = uEye - vPosition;
@@ -30,19 +48,15 @@ void main() {
   if (uHasEmissiveTexture != 0) emission *= texture(uEmissiveTexture, vUv).rgb;
 
   vec3 irradiance = vec3(0.0);
-  for (int i = 0; i < uBeamCount; ++i) {
-    // Most beams miss most pixels: test the cone with two loads before anything else.
-    vec4 lens = beams[i].lensPos;
-    vec3 d = vPosition - lens.xyz;
-    if (dot(d, beams[i].zb.xyz) <= lens.w * length(d)) continue;
-    vec3 wl;
-    float r;
-    vec3 I = beamIntensity(beams[i], vPosition, wl, r);
-    float cosine = dot(n, -wl);
-    if (cosine <= 0.0 || I == vec3(0.0)) continue;
-    // Shadow lookups from a point nudged off the surface, by about a shadow texel at distance r.
-    float v = beamVisibility(beams[i], vPosition + n * (0.0015 * r));
-    irradiance += I * (v * cosine * exp(-uSigmaT * r) / (r * r));
+  if (uTileColumns == 0) {
+    for (int i = 0; i < uBeamCount; ++i) irradiance += beamIrradiance(beams[i], n);
+  } else {
+    ivec2 tile = ivec2(gl_FragCoord.xy) / 16;
+    int base = (tile.y * uTileColumns + tile.x) * uMaskWords;
+    for (int w = 0; w < uMaskWords; ++w) {
+      for (uint bits = tileMasks[base + w]; bits != 0u; bits &= bits - 1u)
+        irradiance += beamIrradiance(beams[w * 32 + findLSB(bits)], n);
+    }
   }
   vec3 L = albedo / PI * irradiance + albedo * uAmbient + emission;
   outRadiance = vec4(L * exp(-uSigmaT * T), 1.0);

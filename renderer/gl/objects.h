@@ -73,12 +73,19 @@ struct QueryKind {
   static void destroy(GLuint id) { glDeleteQueries(1, &id); }
 };
 
+struct SamplesQueryKind {
+  static constexpr GLenum kLabelType = GL_QUERY;
+  static GLuint create() { GLuint id; glCreateQueries(GL_SAMPLES_PASSED, 1, &id); return id; }
+  static void destroy(GLuint id) { glDeleteQueries(1, &id); }
+};
+
 using Buffer = Object<BufferKind>;
 using VertexArray = Object<VertexArrayKind>;
 using Framebuffer = Object<FramebufferKind>;
 using Sampler = Object<SamplerKind>;
 using Program = Object<ProgramKind>;
 using TimerQuery = Object<QueryKind>;
+using SamplesQuery = Object<SamplesQueryKind>;
 
 // Textures need their target at creation, so they carry it.
 class Texture {

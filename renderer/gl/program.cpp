@@ -61,10 +61,11 @@ Result<GLuint> compile(GLenum stage, const std::string& file, const ProgramDesc&
 Result<Program> buildProgram(const ProgramDesc& desc) {
   Program program(desc.label);
   std::vector<GLuint> shaders;
-  auto vs = compile(GL_VERTEX_SHADER, desc.vertex, desc);
+  const std::string& first = desc.compute.empty() ? desc.vertex : desc.compute;
+  auto vs = compile(desc.compute.empty() ? GL_VERTEX_SHADER : GL_COMPUTE_SHADER, first, desc);
   if (!vs) return vs.error();
   shaders.push_back(*vs);
-  if (!desc.fragment.empty()) {
+  if (desc.compute.empty() && !desc.fragment.empty()) {
     auto fs = compile(GL_FRAGMENT_SHADER, desc.fragment, desc);
     if (!fs) {
       glDeleteShader(*vs);
@@ -85,7 +86,7 @@ Result<Program> buildProgram(const ProgramDesc& desc) {
     glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &len);
     std::string log(static_cast<size_t>(len > 0 ? len : 1), '\0');
     glGetProgramInfoLog(program.id(), len, nullptr, log.data());
-    return Error{"shaders/" + desc.vertex, desc.label, "link failed: " + log};
+    return Error{"shaders/" + first, desc.label, "link failed: " + log};
   }
   return program;
 }

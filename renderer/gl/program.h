@@ -13,8 +13,9 @@ namespace haze::gl {
 
 struct ProgramDesc {
   std::string label;                  // also the debugger's name
-  std::string vertex;                 // shaders/<file>, e.g. "surface.vert.glsl"
+  std::string vertex;                 // shaders/<file>, e.g. "surface.vert.glsl"; "" with compute
   std::string fragment;               // "" for none (depth-only passes)
+  std::string compute;                // a compute program (no vertex or fragment stage)
   std::vector<std::string> defines;   // "SHADOWS", "LATTICE 1"...
 };
 

@@ -1,0 +1,32 @@
+// Tiled light culling for the surface pass: a compute pass over the depth pre-pass that gives
+// each 16x16-pixel tile a bit mask of the beams that can reach a surface seen in it
+// (shaders/light_tiles.comp.glsl). With tens of beams most tiles see one to three of them.
+#pragma once
+
+#include "fixtures/result.h"
+#include "renderer/gl/objects.h"
+#include "renderer/scene/frame_state.h"
+
+namespace haze {
+
+class LightTiles {
+ public:
+  static constexpr int kTilePx = 16;
+
+  static Result<LightTiles> create(int width, int height);
+
+  // Fills the masks from the scene depth texture, for `beamCount` beams of the beams buffer
+  // (which must be bound at its binding, with the scene depth at camera.glsl's unit).
+  void update(const CameraState& camera, int beamCount);
+  // The masks' buffer at a storage-buffer binding.
+  void bind(GLuint binding) const;
+  int columns() const { return columns_; }
+  int maskWords() const { return maskWords_; }
+
+ private:
+  gl::Program program_;
+  gl::Buffer masks_;
+  int width_ = 0, height_ = 0, columns_ = 0, rows_ = 0, maskWords_ = 0, capacityWords_ = 0;
+};
+
+}  // namespace haze
