@@ -9,7 +9,7 @@
 //   gui_fixtures.cpp    the fixture list (selection)
 //   gui_library.cpp     the show's profiles, adding files from disk, placing
 //   gui_patch.cpp       the patch table with conflicts
-//   gui_atmosphere.cpp  atmosphere, render quality, exposure
+//   gui_atmosphere.cpp  atmosphere, render quality, exposure, bloom
 //   gui_inspector.cpp   the selection: transform, pan/tilt, focus, attributes
 //   gui_help.cpp        the shortcuts window (F1)
 // Panels draw with ImGui and change the show only through ShowDocument (commands, undo).
@@ -72,6 +72,7 @@ struct Gui {
   std::string placeProfile;  // the library's selection
   Quality quality = Quality::Default;
   float exposureEv = 0.0f;
+  float bloom = 0.0f;  // lens glare on the display (DisplaySettings::bloom); never in the show
   double frameMs = 0.0;
   int stillFrames = 0;
   bool showHelp = false;

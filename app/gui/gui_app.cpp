@@ -275,7 +275,7 @@ int runGui(const Args& args) {
         ++gui.stillFrames;
       }
     }
-    r->drawDisplay({.exposureEv = gui.exposureEv}, 0, vx, vy, vw, vh);
+    r->drawDisplay({.exposureEv = gui.exposureEv, .bloom = gui.bloom}, 0, vx, vy, vw, vh);
     glViewport(0, 0, fbW, fbH);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     if (!settled) gui.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -1,6 +1,6 @@
 // The atmosphere tab: scattering, absorption, phase function (and g for Henyey-Greenstein),
 // ambient light (physics.md), each a setAtmosphere command (a drag is one undo step); and the
-// view's render quality and exposure, which are not part of the show.
+// view's render quality, exposure and bloom, which are not part of the show.
 #include "app/gui/gui.h"
 #include "app/udp_receiver.h"
 
@@ -53,6 +53,9 @@ void drawAtmosphereTab(Gui& gui) {
   if (ImGui::Combo("Quality", &q, names, 3)) gui.quality = static_cast<Quality>(q);
   ImGui::SetNextItemWidth(110);
   ImGui::SliderFloat("Exposure EV", &gui.exposureEv, -6.0f, 6.0f, "%.1f");
+  ImGui::SetNextItemWidth(110);
+  ImGui::SliderFloat("Bloom", &gui.bloom, 0.0f, 0.3f, "%.2f");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Lens glare around bright beams: display only, not in PFMs");
   ImGui::TextWrapped("While the view or the stage moves it draws at draft quality; when still it refines "
                      "(%d frames so far).", gui.stillFrames);
 
