@@ -11,15 +11,16 @@ namespace {
 constexpr const char* kHelp =
     "haze: stage-lighting previsualization\n"
     "  haze                                 GUI on the bundled demo show\n"
-    "  haze open SHOW                       GUI on a show\n"
+    "  haze open SHOW [--cue N] [--select ID]... [--tab T] [--quality Q] [--help-window]\n"
+    "                 [--screenshot OUT.png --frames N] [--artnet] [--sacn] [--bind ADDR]   GUI on a show\n"
     "  haze render SHOW [--cue N] [--at S] [--camera NAME] [--width W --height H]\n"
-    "                   [--quality draft|default|high|reference] -o OUT.(png|pfm)\n"
+    "                   [--quality draft|default|high|reference] [--exposure EV] [--bloom F] -o OUT.(png|pfm)\n"
     "  haze render SHOW --all-cues -o DIR/  one image per cue\n"
     "  haze state SHOW --cue N [--at S] [--list NAME] --json\n"
     "  haze validate SHOW\n"
-    "  haze import-mvr FILE.mvr -o SHOW.haze.json\n"
+    "  haze import-mvr FILE.mvr -o SHOW.haze.json [--force] [--no-venue] [--verbose]\n"
     "  haze fixture info FILE --json        native profile, .ies, .ldt or .gdtf\n"
-    "  haze bench [--fixtures N] [--width W --height H] [--quality Q] --json\n"
+    "  haze bench [--fixtures N] [--width W --height H] [--quality Q] [--compare-reference] [--study] --json\n"
     "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S] [--state-json OUT] [--render OUT.png]\n"
     "Each subcommand takes --help.\n";
 
