@@ -12,6 +12,7 @@
 //   gui_atmosphere.cpp  atmosphere, render quality, exposure, bloom
 //   gui_inspector.cpp   the selection: transform, pan/tilt, focus, attributes
 //   gui_help.cpp        the shortcuts window (F1)
+//   gui_import.cpp      the window listing an MVR import's warnings
 // Panels draw with ImGui and change the show only through ShowDocument (commands, undo).
 #pragma once
 
@@ -76,6 +77,10 @@ struct Gui {
   double frameMs = 0.0;
   int stillFrames = 0;
   bool showHelp = false;
+  // The last MVR import's warnings, folded (shows/mvr_import.h groupMvrWarnings), in a window.
+  std::vector<std::string> importWarnings;
+  std::string importedFrom;
+  bool showImportWarnings = false;
   std::string openTab;  // a tab of the show panel to bring to the front once ("Patch"...)
 
   // Cues panel: the cue picked for editing (not the one on stage).
@@ -136,6 +141,7 @@ void drawPatchTab(Gui& gui);
 void drawAtmosphereTab(Gui& gui);
 void drawInspector(Gui& gui);
 void drawHelp(Gui& gui);
+void drawImportWarnings(Gui& gui);
 void drawFileDialogs(Gui& gui);
 void handleViewport(Gui& gui);  // mouse in the viewport, then the overlay
 

@@ -225,6 +225,7 @@ int runGui(const Args& args) {
     drawShowPanel(gui);
     drawInspector(gui);
     drawHelp(gui);
+    drawImportWarnings(gui);
     drawFileDialogs(gui);
     handleViewport(gui);
     ImGui::Render();

@@ -4,6 +4,7 @@
 // no file browser): it starts in the show's folder.
 #include <GLFW/glfw3.h>
 
+#include <cstdio>
 #include <cstring>
 
 #include "app/gui/gui.h"
@@ -113,8 +114,20 @@ void finishPath(Gui& gui, const std::string& path) {
     case FileAction::ImportMvr: {
       const fs::path showFile = fs::path(path).replace_extension(".haze.json");
       auto imported = importMvr(path, showFile);
-      if (!imported) gui.say(imported.error().str(), true);
-      else openPath(gui, showFile.string());
+      if (!imported) {
+        gui.say(imported.error().str(), true);
+        break;
+      }
+      openPath(gui, showFile.string());
+      gui.importWarnings = groupMvrWarnings(imported->warnings);
+      gui.importedFrom = fs::path(path).filename().string();
+      gui.showImportWarnings = !gui.importWarnings.empty();
+      // Also on stderr, as `haze import-mvr` prints them, for logs and for tests.
+      std::fprintf(stderr, "haze: imported %s: %d fixtures, %zu warnings\n", gui.importedFrom.c_str(),
+                   imported->fixtureCount, imported->warnings.size());
+      for (const std::string& w : gui.importWarnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
+      if (gui.showImportWarnings)
+        gui.say(std::to_string(imported->warnings.size()) + " import warnings: see the window", false);
       break;
     }
     default: break;

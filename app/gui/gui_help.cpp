@@ -21,6 +21,7 @@ constexpr const char* kShortcuts[][2] = {
     {"Ctrl+Z", "Undo"},
     {"Ctrl+Shift+Z, Ctrl+Y", "Redo"},
     {"Ctrl+N / Ctrl+O", "New show / open a show"},
+    {"Ctrl+I", "Import an MVR rig (the show is written beside it)"},
     {"Ctrl+S / Ctrl+Shift+S", "Save / save as"},
     {"Ctrl+Q", "Quit (asks about unsaved changes)"},
     {"F1", "This window"},

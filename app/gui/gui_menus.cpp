@@ -75,6 +75,7 @@ void handleShortcuts(Gui& gui) {
         case GLFW_KEY_U: updateCursorCue(gui); break;
         case GLFW_KEY_S: shift ? requestFileAction(gui, FileAction::SaveAs) : saveCurrent(gui); break;
         case GLFW_KEY_O: requestFileAction(gui, FileAction::Open); break;
+        case GLFW_KEY_I: requestFileAction(gui, FileAction::ImportMvr); break;
         case GLFW_KEY_N: requestFileAction(gui, FileAction::New); break;
         case GLFW_KEY_Q: requestFileAction(gui, FileAction::Quit); break;
         default: break;
@@ -117,7 +118,7 @@ void drawMenuBar(Gui& gui) {
         if (ImGui::MenuItem(r.c_str())) requestFileAction(gui, FileAction::OpenPath, r);
       ImGui::EndMenu();
     }
-    if (ImGui::MenuItem("Import MVR...")) requestFileAction(gui, FileAction::ImportMvr);
+    if (ImGui::MenuItem("Import MVR...", "Ctrl+I")) requestFileAction(gui, FileAction::ImportMvr);
     ImGui::Separator();
     if (ImGui::MenuItem("Save", "Ctrl+S")) saveCurrent(gui);
     if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) requestFileAction(gui, FileAction::SaveAs);
