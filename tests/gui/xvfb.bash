@@ -1,20 +1,24 @@
-# Sourced by GUI tests: starts Xvfb on a free display number and stops it on exit.
+# Sourced by GUI tests: starts Xvfb on a display number of its own choosing (-displayfd, so GUI
+# tests that run in parallel never share a display and drive each other's windows) and stops
+# it on exit.
 start_xvfb() {
   command -v Xvfb >/dev/null || { echo "FAIL: Xvfb is not installed (make deps installs xvfb)"; exit 1; }
-  for n in $(seq 90 140); do
-    [ -e /tmp/.X$n-lock ] && continue
-    Xvfb :$n -screen 0 1280x800x24 -nolisten tcp >/dev/null 2>&1 &
-    XVFB_PID=$!
-    for _ in $(seq 50); do
-      [ -e /tmp/.X11-unix/X$n ] && break
-      sleep 0.1
-    done
-    if kill -0 $XVFB_PID 2>/dev/null && [ -e /tmp/.X11-unix/X$n ]; then
-      export DISPLAY=:$n
-      trap 'kill $XVFB_PID 2>/dev/null' EXIT
-      return 0
-    fi
+  local dfile
+  dfile=$(mktemp)
+  Xvfb -displayfd 9 -screen 0 1280x800x24 -nolisten tcp 9>"$dfile" >/dev/null 2>&1 &
+  XVFB_PID=$!
+  trap 'kill $XVFB_PID 2>/dev/null' EXIT
+  for _ in $(seq 100); do
+    [ -s "$dfile" ] && break
+    kill -0 $XVFB_PID 2>/dev/null || break
+    sleep 0.1
   done
-  echo "FAIL: could not start Xvfb"
-  exit 1
+  local n
+  n=$(tr -dc '0-9' <"$dfile")
+  rm -f "$dfile"
+  if [ -z "$n" ] || ! kill -0 $XVFB_PID 2>/dev/null; then
+    echo "FAIL: could not start Xvfb"
+    exit 1
+  fi
+  export DISPLAY=:$n
 }
