@@ -79,11 +79,7 @@ void addSphere(Venue& v, glm::vec3 centre, float radiusM, int segments, int ring
 
 BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldDeg, float peakCd, glm::vec3 color) {
   BeamState b;
-  b.pose.lensPosition = lensPos;
-  b.pose.zb = glm::normalize(dir);
-  const glm::vec3 helper = std::abs(b.pose.zb.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-  b.pose.xb = glm::normalize(glm::cross(helper, b.pose.zb));
-  b.pose.yb = glm::cross(b.pose.zb, b.pose.xb);
+  b.pose = beamAlong(lensPos, dir);
   auto dist = parametricDistribution(beamDeg, fieldDeg, peakCd);
   EXPECT_TRUE(dist.ok()) << (dist.ok() ? "" : dist.error().str());
   b.optics.distribution = std::make_shared<Distribution>(std::move(*dist));

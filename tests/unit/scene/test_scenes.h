@@ -114,11 +114,7 @@ inline std::shared_ptr<const Distribution> parametric(float beamDeg, float field
 inline BeamState makeBeam(glm::vec3 lens, glm::vec3 zb, std::shared_ptr<const Distribution> dist,
                           float fieldAngleDeg, glm::vec3 color = glm::vec3(1.0f)) {
   BeamState b;
-  b.pose.lensPosition = lens;
-  b.pose.zb = glm::normalize(zb);
-  const glm::vec3 helper = std::fabs(b.pose.zb.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-  b.pose.xb = glm::normalize(glm::cross(helper, b.pose.zb));
-  b.pose.yb = glm::cross(b.pose.zb, b.pose.xb);
+  b.pose = beamAlong(lens, zb);
   b.optics.distribution = std::move(dist);
   b.optics.profileFieldAngleDeg = fieldAngleDeg;
   b.optics.fieldAngleDeg = fieldAngleDeg;
