@@ -9,34 +9,9 @@
 
 #include "fixtures/photometry.h"
 #include "fixtures/pose.h"
+#include "renderer/scene/scene_builder.h"
 
 namespace haze {
-namespace {
-
-void addBox(Venue& v, int material, glm::vec3 lo, glm::vec3 hi) {
-  Primitive p;
-  p.name = "box";
-  p.material = material;
-  const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  for (int a = 0; a < 3; ++a)
-    for (int s = 0; s < 2; ++s) {
-      const glm::vec3 n = axes[a] * (s ? 1.0f : -1.0f);
-      const glm::vec3 u = axes[(a + 1) % 3], w = axes[(a + 2) % 3];
-      const glm::vec3 c = (lo + hi) * 0.5f + n * (hi - lo) * 0.5f;
-      const glm::vec3 hu = u * (hi - lo) * 0.5f, hw = w * (hi - lo) * 0.5f;
-      const auto base = static_cast<uint32_t>(p.positions.size());
-      for (const glm::vec3& q : {c - hu - hw, c + hu - hw, c + hu + hw, c - hu + hw}) {
-        p.positions.push_back(q);
-        p.normals.push_back(n);
-      }
-      p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-    }
-  v.primitives.push_back(std::move(p));
-  v.boundsMin = glm::min(v.boundsMin, lo);
-  v.boundsMax = glm::max(v.boundsMax, hi);
-}
-
-}  // namespace
 
 Venue benchVenue() {
   Venue v;
@@ -46,13 +21,13 @@ Venue benchVenue() {
   v.materials.push_back(Material{.name = "set", .baseColor = glm::vec4(0.6f, 0.55f, 0.5f, 1)});
   v.boundsMin = glm::vec3(1e9f);
   v.boundsMax = glm::vec3(-1e9f);
-  addBox(v, 1, {-10, -0.1f, -8}, {10, 0, 6});      // deck and house floor
-  addBox(v, 2, {-10, 0, -8.2f}, {10, 9, -8});      // back wall
-  addBox(v, 2, {-10.2f, 0, -8}, {-10, 9, 6});      // side walls
-  addBox(v, 2, {10, 0, -8}, {10.2f, 9, 6});
-  for (float x : {-4.0f, 0.0f, 4.0f}) addBox(v, 3, {x - 0.3f, 0, -3.3f}, {x + 0.3f, 3.5f, -2.7f});  // columns
+  addBox(v, {-10, -0.1f, -8}, {10, 0, 6}, 1);      // deck and house floor
+  addBox(v, {-10, 0, -8.2f}, {10, 9, -8}, 2);      // back wall
+  addBox(v, {-10.2f, 0, -8}, {-10, 9, 6}, 2);      // side walls
+  addBox(v, {10, 0, -8}, {10.2f, 9, 6}, 2);
+  for (float x : {-4.0f, 0.0f, 4.0f}) addBox(v, {x - 0.3f, 0, -3.3f}, {x + 0.3f, 3.5f, -2.7f}, 3);  // columns
   for (float x : {-2.5f, -1.5f, -0.5f, 0.5f, 1.5f, 2.5f})                                       // slatted panel
-    addBox(v, 3, {x - 0.3f, 4.5f, -1.05f}, {x + 0.3f, 4.6f, -0.95f});
+    addBox(v, {x - 0.3f, 4.5f, -1.05f}, {x + 0.3f, 4.6f, -0.95f}, 3);
   return v;
 }
 
@@ -98,7 +73,7 @@ Venue studyVenue() {
   v.materials.push_back(Material{.name = "floor", .baseColor = glm::vec4(0.4f, 0.4f, 0.4f, 1)});
   v.boundsMin = glm::vec3(1e9f);
   v.boundsMax = glm::vec3(-1e9f);
-  addBox(v, 1, {-8, -0.1f, -8}, {8, 0, 8});
+  addBox(v, {-8, -0.1f, -8}, {8, 0, 8}, 1);
   // A sphere (UV, 24 x 48) in the beam.
   Primitive p;
   p.name = "sphere";

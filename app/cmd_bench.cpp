@@ -4,7 +4,6 @@
 // and per pass, with shadow and light maps cached after the first (cold) frame, as while a
 // designer looks at a cue; the cold frame is reported apart.
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -15,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/bench_scene.h"
+#include "app/command_line.h"
 #include "app/commands.h"
 #include "app/render_session.h"
 #include "renderer/context.h"
@@ -132,34 +132,31 @@ int runStudy(int width, int height) {
 
 }  // namespace
 
+constexpr const char* kBenchUsage =
+    "usage: haze bench [--fixtures N] [--width W --height H] [--quality Q] [--frames K] [--planes N]\n"
+    "                  [--scatter-divisor D] [--min-samples M] [--compare-reference] [--json]\n"
+    "       haze bench --study [--width W --height H]\n"
+    "Times the synthetic stage (N fixtures) per frame; --compare-reference also renders the CPU reference\n"
+    "and gives the mean relative error; --study runs the virtual-plane accuracy study.\n";
+
 int runBench(const Args& args) {
   int fixtures = 16, width = 1280, height = 720, frames = 5;
   std::string quality = "default";
   bool json = false, compare = false, study = false;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto intValue = [&](int& dst, int lo, int hi) {
-      if (i + 1 >= args.size()) return false;
-      const std::string& s = args[++i];
-      const auto r = std::from_chars(s.data(), s.data() + s.size(), dst);
-      return r.ec == std::errc() && r.ptr == s.data() + s.size() && dst >= lo && dst <= hi;
-    };
-    if (a == "--fixtures") { if (!intValue(fixtures, 0, 4096)) return fail("--fixtures needs 0..4096"); }
-    else if (a == "--width") { if (!intValue(width, 1, 16384)) return fail("--width needs 1..16384"); }
-    else if (a == "--height") { if (!intValue(height, 1, 16384)) return fail("--height needs 1..16384"); }
-    else if (a == "--frames") { if (!intValue(frames, 1, 1000)) return fail("--frames needs 1..1000"); }
-    else if (a == "--quality" && i + 1 < args.size()) quality = args[++i];
-    else if (a == "--json") json = true;
-    else if (a == "--compare-reference") compare = true;
-    else if (a == "--study") study = true;
-    else if (a == "--planes") { if (!intValue(planes, 1, 4096)) return fail("--planes needs 1..4096"); }
-    else if (a == "--scatter-divisor") { if (!intValue(divisor, 1, 8)) return fail("--scatter-divisor needs 1..8"); }
-    else if (a == "--min-samples") { if (!intValue(minSamples, 0, 256)) return fail("--min-samples needs 0..256"); }
-    else return fail("unknown option '" + a + "' (usage: haze bench [--fixtures N] [--width W --height H] "
-                     "[--quality Q] [--frames K] [--planes N] [--scatter-divisor D] [--min-samples M] "
-                     "[--compare-reference] [--json])");
-  }
+  CommandLine cli("haze bench", kBenchUsage);
+  cli.integer("--fixtures", fixtures, 0, 4096, "0..4096")
+      .integer("--width", width, 1, 16384, "1..16384")
+      .integer("--height", height, 1, 16384, "1..16384")
+      .integer("--frames", frames, 1, 1000, "1..1000")
+      .choice("--quality", quality, {"draft", "default", "high", "reference"})
+      .flag("--json", json)
+      .flag("--compare-reference", compare)
+      .flag("--study", study)
+      .integer("--planes", planes, 1, 4096, "1..4096")
+      .integer("--scatter-divisor", divisor, 1, 8, "1..8")
+      .integer("--min-samples", minSamples, 0, 256, "0..256");
+  if (auto done = cli.parse(args)) return *done;
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
   if (*q == Quality::Reference)

@@ -3,7 +3,6 @@
 // (or until SIGINT/SIGTERM), then writes the fixtures' final states and/or renders them, and
 // prints what arrived (good packets, drops by reason, rate, sources) to stderr.
 #include <algorithm>
-#include <charconv>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -13,9 +12,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/command_line.h"
 #include "app/commands.h"
 #include "app/render_job.h"
-#include "app/udp_receiver.h"
+#include "app/state_json.h"
+#include "shows/dmx/udp_receiver.h"
+#include "fixtures/core/atomic_file.h"
 #include "shows/show.h"
 #include "shows/show_json.h"
 
@@ -37,61 +39,6 @@ constexpr const char* kUsage =
 
 volatile std::sig_atomic_t gStop = 0;
 void onSignal(int) { gStop = 1; }
-
-int fail(const std::string& line) {
-  std::fprintf(stderr, "haze live: %s\n", line.c_str());
-  return 1;
-}
-
-bool parseNumber(const std::string& s, double& out) {
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size();
-}
-
-// The shape of `haze state --json`: {"<id>": {"intensity", "pan", "tilt", "color", "zoom",
-// "gobo", "gobo_rotation", "iris"}}; zoom falls back to the profile's field angle.
-nlohmann::json stateToJson(const Show& show, const ProfileSet& profiles, const StageState& state) {
-  nlohmann::json j = nlohmann::json::object();
-  for (const auto& [id, a] : state) {
-    float zoom = a.zoomDeg.value_or(0.0f);
-    if (!a.zoomDeg) {
-      const FixtureDef* f = show.findFixture(id);
-      auto p = f ? profiles.find(f->profile) : profiles.end();
-      if (p != profiles.end() && p->second) zoom = p->second->fieldAngleDeg;
-    }
-    j[std::to_string(id)] = {
-        {"intensity", tidy(a.intensity)},
-        {"pan", tidy(a.panDeg)},
-        {"tilt", tidy(a.tiltDeg)},
-        {"color", {tidy(a.color.r), tidy(a.color.g), tidy(a.color.b)}},
-        {"zoom", tidy(zoom)},
-        {"gobo", a.gobo},
-        {"gobo_rotation", tidy(a.goboRotationDeg)},
-        {"iris", tidy(a.iris)},
-    };
-  }
-  return j;
-}
-
-// Written beside the target and renamed, so a reader never sees half a file.
-Status writeFileAtomically(const std::filesystem::path& out, const std::string& text) {
-  std::filesystem::path tmp = out;
-  tmp += ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) return Error{out.string(), "", "cannot open for writing; expected a writable folder"};
-    f << text;
-    f.flush();
-    if (!f) return Error{out.string(), "", "write failed (disk full?)"};
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, out, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    return Error{out.string(), "", "cannot replace the file: " + ec.message()};
-  }
-  return Ok{};
-}
 
 std::string printable(const std::string& s) {
   std::string out;
@@ -133,76 +80,39 @@ int runLive(const Args& args) {
   LiveOptions options;
   RenderJobOptions render;
   bool artNet = false, sacn = false;
-  double duration = 0.0, width = render.width, height = render.height;
-  double artNetPort = options.udp.artNetPort, sacnPort = options.udp.sacnPort;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](std::string& dst) {
-      if (i + 1 >= args.size()) return false;
-      dst = args[++i];
-      return true;
-    };
-    auto number = [&](double& dst) {
-      std::string s;
-      return value(s) && parseNumber(s, dst);
-    };
-    auto port = [&](double& dst) { return number(dst) && dst >= 0 && dst <= 65535 && dst == static_cast<int>(dst); };
-    if (a == "--artnet") {
-      artNet = true;
-    } else if (a == "--sacn") {
-      sacn = true;
-    } else if (a == "--bind") {
-      if (!value(options.udp.bindAddress)) return fail("--bind needs an IPv4 address such as 127.0.0.1");
-    } else if (a == "--duration") {
-      if (!number(duration) || duration < 0 || duration > 1e7) return fail("--duration needs seconds >= 0");
-    } else if (a == "--state-json") {
-      if (!value(stateJson)) return fail("--state-json needs an output file");
-    } else if (a == "--render") {
-      if (!value(renderOut)) return fail("--render needs an output image (.png or .pfm)");
-    } else if (a == "--artnet-port") {
-      if (!port(artNetPort)) return fail("--artnet-port needs a port 0..65535");
-    } else if (a == "--sacn-port") {
-      if (!port(sacnPort)) return fail("--sacn-port needs a port 0..65535");
-    } else if (a == "--multicast") {
-      options.udp.multicast = true;
-    } else if (a == "--on-loss") {
-      if (!value(onLoss) || (onLoss != "hold" && onLoss != "blackout")) {
-        return fail("--on-loss needs hold or blackout");
-      }
-    } else if (a == "--no-preview") {
-      options.input.acceptPreview = false;
-    } else if (a == "--camera") {
-      if (!value(render.camera)) return fail("--camera needs a camera name");
-    } else if (a == "--width") {
-      if (!number(width) || width < 1 || width > 16384) return fail("--width needs a whole number 1..16384");
-    } else if (a == "--height") {
-      if (!number(height) || height < 1 || height > 16384) return fail("--height needs a whole number 1..16384");
-    } else if (a == "--quality") {
-      if (!value(quality)) return fail("--quality needs draft|default|high|reference");
-    } else if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    } else if (!a.empty() && a[0] == '-') {
-      return fail("unknown option '" + a + "' (see haze live --help)");
-    } else if (showPath.empty()) {
-      showPath = a;
-    } else {
-      return fail("unexpected argument '" + a + "' (one show at a time)");
-    }
-  }
-  if (showPath.empty()) return fail("no show given (see haze live --help)");
+  double duration = 0.0;
+  int artNetPort = options.udp.artNetPort, sacnPort = options.udp.sacnPort;
+  bool noPreview = false;
+  CommandLine cli("haze live", kUsage);
+  cli.flag("--artnet", artNet)
+      .flag("--sacn", sacn)
+      .text("--bind", options.udp.bindAddress, "an IPv4 address such as 127.0.0.1")
+      .number("--duration", duration, 0, 1e7, "seconds >= 0")
+      .text("--state-json", stateJson, "an output file")
+      .text("--render", renderOut, "an output image (.png or .pfm)")
+      .integer("--artnet-port", artNetPort, 0, 65535, "a port 0..65535")
+      .integer("--sacn-port", sacnPort, 0, 65535, "a port 0..65535")
+      .flag("--multicast", options.udp.multicast)
+      .choice("--on-loss", onLoss, {"hold", "blackout"})
+      .flag("--no-preview", noPreview)
+      .text("--camera", render.camera, "a camera name")
+      .integer("--width", render.width, 1, 16384, "a whole number 1..16384")
+      .integer("--height", render.height, 1, 16384, "a whole number 1..16384")
+      .choice("--quality", quality, {"draft", "default", "high", "reference"})
+      .positional(showPath, "show");
+  if (auto done = cli.parse(args)) return *done;
+  if (noPreview) options.input.acceptPreview = false;
+  const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
   if (quality == "draft") render.quality = Quality::Draft;
   else if (quality == "default") render.quality = Quality::Default;
   else if (quality == "high") render.quality = Quality::High;
   else if (quality == "reference") render.quality = Quality::Reference;
   else return fail("--quality '" + quality + "' is not one of draft|default|high|reference");
-  render.width = static_cast<int>(width);
-  render.height = static_cast<int>(height);
   if (!artNet && !sacn) artNet = sacn = true;
   options.udp.artNet = artNet;
   options.udp.sacn = sacn;
-  options.udp.artNetPort = static_cast<int>(artNetPort);
-  options.udp.sacnPort = static_cast<int>(sacnPort);
+  options.udp.artNetPort = artNetPort;
+  options.udp.sacnPort = sacnPort;
   options.input.merge.onLoss = onLoss == "blackout" ? LossPolicy::Blackout : LossPolicy::HoldLastLook;
 
   Result<Show> show = loadShow(showPath);
@@ -259,8 +169,8 @@ int runLive(const Args& args) {
 
   int status = 0;
   if (!stateJson.empty()) {
-    const std::string text = stateToJson(*show, *profiles, state).dump(2) + "\n";
-    if (Status s = writeFileAtomically(stateJson, text); !s) status = fail(s.error().str());
+    const std::string text = stageStateJson(*show, *profiles, state).dump(2) + "\n";
+    if (Status s = writeFileAtomically(stateJson, text, false); !s) status = fail(s.error().str());
   }
   if (!renderOut.empty()) {
     if (Status s = renderStateToFile(*show, *profiles, state, render, renderOut); !s) {

@@ -3,6 +3,7 @@
 // arguments exit 2.
 #include <iostream>
 
+#include "app/command_line.h"
 #include "app/commands.h"
 #include "shows/show_validate.h"
 
@@ -14,25 +15,9 @@ constexpr const char* kUsage = "usage: haze validate SHOW";
 
 int runValidate(const Args& args) {
   std::string file;
-  for (const std::string& a : args) {
-    if (a == "--help" || a == "-h") {
-      std::cout << kUsage << "\n  Checks a show file and its profiles; lists every problem with its JSON pointer.\n";
-      return 0;
-    }
-    if (!a.empty() && a[0] == '-') {
-      std::cerr << "haze validate: unknown option \"" << a << "\"; " << kUsage << "\n";
-      return 2;
-    }
-    if (!file.empty()) {
-      std::cerr << "haze validate: expected one show, got \"" << file << "\" and \"" << a << "\"; " << kUsage << "\n";
-      return 2;
-    }
-    file = a;
-  }
-  if (file.empty()) {
-    std::cerr << "haze validate: expected a show file; " << kUsage << "\n";
-    return 2;
-  }
+  CommandLine cli("haze validate", std::string(kUsage) + "\n  Checks a show file and its profiles; lists every problem with its JSON pointer.\n", 2);
+  cli.positional(file, "show");
+  if (auto done = cli.parse(args)) return *done;
   std::vector<Error> problems = validateShowFile(file);
   for (const Error& e : problems) std::cerr << e.str() << "\n";
   if (!problems.empty()) {

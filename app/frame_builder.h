@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 #include "renderer/scene/frame_state.h"
 #include "shows/playback.h"
 #include "shows/show.h"

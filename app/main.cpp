@@ -24,10 +24,27 @@ constexpr const char* kHelp =
     "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S] [--state-json OUT] [--render OUT.png]\n"
     "Each subcommand takes --help.\n";
 
+#ifndef HAZE_HAS_GUI
+int noGui() {
+  std::fputs("haze: this haze was built without the GUI (HAZE_BUILD_GUI=OFF); the headless commands "
+             "work (haze --help)\n", stderr);
+  return 2;
+}
+#endif
+
+int openGui(const haze::Args& args) {
+#ifdef HAZE_HAS_GUI
+  return haze::runGui(args);
+#else
+  (void)args;
+  return noGui();
+#endif
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) return haze::runGui({});
+  if (argc < 2) return openGui({});
   const std::string cmd = argv[1];
   const haze::Args rest(argv + 2, argv + argc);
   if (cmd == "render") return haze::runRender(rest);
@@ -37,7 +54,7 @@ int main(int argc, char** argv) {
   if (cmd == "bench") return haze::runBench(rest);
   if (cmd == "live") return haze::runLive(rest);
   if (cmd == "import-mvr") return haze::runImportMvr(rest);
-  if (cmd == "open") return haze::runGui(rest);
+  if (cmd == "open") return openGui(rest);
   if (cmd == "--help" || cmd == "-h" || cmd == "help") {
     std::fputs(kHelp, stdout);
     return 0;

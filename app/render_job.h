@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 #include "shows/playback.h"
 #include "shows/show.h"
 

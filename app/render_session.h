@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "app/render_job.h"
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 #include "renderer/context.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/venue.h"

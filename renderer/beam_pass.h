@@ -9,7 +9,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 #include "renderer/beam_footprint.h"
 #include "renderer/beam_resources.h"
 #include "renderer/gl/objects.h"

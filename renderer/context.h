@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 
 namespace haze {
 

@@ -3,7 +3,7 @@
 // (shaders/light_tiles.comp.glsl). With tens of beams most tiles see one to three of them.
 #pragma once
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 #include "renderer/gl/objects.h"
 #include "renderer/scene/frame_state.h"
 

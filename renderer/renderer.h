@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 #include "renderer/scene/frame_state.h"
 #include "renderer/scene/image.h"
 #include "renderer/scene/venue.h"

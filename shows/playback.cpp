@@ -11,7 +11,11 @@ namespace haze {
 
 namespace {
 
-void overlay(Attributes& a, const CueValues& v) {
+float lerp(float a, float b, float f) { return a + (b - a) * f; }
+
+}  // namespace
+
+void overlayValues(Attributes& a, const CueValues& v) {
   if (v.intensity) a.intensity = *v.intensity;
   if (v.panDeg) a.panDeg = *v.panDeg;
   if (v.tiltDeg) a.tiltDeg = *v.tiltDeg;
@@ -21,10 +25,6 @@ void overlay(Attributes& a, const CueValues& v) {
   if (v.goboRotationDeg) a.goboRotationDeg = *v.goboRotationDeg;
   if (v.iris) a.iris = *v.iris;
 }
-
-float lerp(float a, float b, float f) { return a + (b - a) * f; }
-
-}  // namespace
 
 StageState defaultState(const Show& show) {
   StageState s;
@@ -38,7 +38,7 @@ StageState trackedState(const Show& show, const ProfileSet& /*profiles*/, const 
   for (size_t i = 0; i <= cueIndex && i < list.cues.size(); ++i)
     for (const auto& [id, v] : list.cues[i].values) {
       auto it = s.find(id);
-      if (it != s.end()) overlay(it->second, v);  // values for unknown ids: validation reports them
+      if (it != s.end()) overlayValues(it->second, v);  // values for unknown ids: validation reports them
     }
   return s;
 }

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "fixtures/attributes.h"
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 #include "shows/show.h"
 
 namespace haze {
@@ -30,6 +30,8 @@ Result<size_t> findCue(const CueList& list, const std::string& number);
 
 // Every fixture of the show at its defaults: the state before the first cue.
 StageState defaultState(const Show& show);
+// Lays one fixture's set values over its attributes: tracking, and the programmer over playback.
+void overlayValues(Attributes& a, const CueValues& v);
 
 struct CueTiming {
   double delayS = 0.0;

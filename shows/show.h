@@ -15,7 +15,7 @@
 
 #include "fixtures/attributes.h"
 #include "fixtures/profile.h"
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 
 namespace haze {
 

@@ -8,7 +8,8 @@
 #include <filesystem>
 #include <string_view>
 
-#include "fixtures/result.h"
+#include "fixtures/core/atomic_file.h"
+#include "fixtures/core/result.h"
 #include "shows/show.h"
 
 namespace haze {
@@ -18,16 +19,8 @@ struct SaveOptions {
   bool keepBackup = true;   // keep the version being replaced as backupPathFor(file)
 };
 
-// FILE + ".bak" in the same folder.
-std::filesystem::path backupPathFor(const std::filesystem::path& file);
-
 // Writes the show to `file` (show-format.md text). On success show.file and show.stamp describe
 // the new file, so the next save checks against it.
 Status saveShow(Show& show, const std::filesystem::path& file, const SaveOptions& options = {});
-
-// The mechanism alone: replace `file` by `bytes` atomically and durably (temporary file, fsync,
-// rename, fsync of the folder), keeping the old version as the backup when asked. Leftover
-// temporary files of processes that died mid-save are removed on the way.
-Status writeFileAtomically(const std::filesystem::path& file, std::string_view bytes, bool keepBackup);
 
 }  // namespace haze

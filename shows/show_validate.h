@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 #include "shows/show.h"
 
 namespace haze {

@@ -24,7 +24,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>  // GetItemID: which widget an edit came from (undo merging)
 
-#include "app/gui/show_document.h"
+#include "shows/edit/show_document.h"
 #include "app/render_job.h"
 #include "renderer/scene/frame_state.h"
 
@@ -77,7 +77,7 @@ struct Gui {
   double frameMs = 0.0;
   int stillFrames = 0;
   bool showHelp = false;
-  // The last MVR import's warnings, folded (shows/mvr_import.h groupMvrWarnings), in a window.
+  // The last MVR import's warnings, folded (shows/import/mvr_import.h groupMvrWarnings), in a window.
   std::vector<std::string> importWarnings;
   std::string importedFrom;
   bool showImportWarnings = false;

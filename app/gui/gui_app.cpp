@@ -19,10 +19,10 @@
 #include "app/commands.h"
 #include "app/frame_builder.h"
 #include "app/gui/gui.h"
-#include "app/gui/recent_files.h"
+#include "shows/edit/recent_files.h"
 #include "app/render_session.h"
-#include "app/udp_receiver.h"
-#include "app/window_context.h"
+#include "shows/dmx/udp_receiver.h"
+#include "app/gui/window_context.h"
 #include "renderer/gl/gl.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/image.h"
@@ -113,6 +113,153 @@ Result<Options> parseOptions(const Args& args) {
   return opt;
 }
 
+// The command line's choices that need the open show: cue, selection, tab, live input.
+Status applyOptions(Gui& gui, const Options& opt) {
+  if (!opt.cue.empty()) {
+    const CueList* list = gui.doc->cueList();
+    auto at = list ? findCue(*list, opt.cue) : Result<size_t>(Error{"", "--cue", "the show has no cue list"});
+    if (!at) return at.error();
+    gui.doc->jumpTo(*at, 0.0);
+    gui.cueCursor = *at;
+  }
+  for (int id : opt.select) {
+    if (!gui.doc->show().findFixture(id)) return Error{"", "--select", "the show has no fixture " + std::to_string(id)};
+    applyClickToSelection(gui.doc->selection, id, false, true);
+  }
+  if (opt.quality) gui.quality = *opt.quality;
+  gui.showHelp = opt.help;
+  if (!opt.tab.empty()) {
+    const std::string names[] = {"Cues", "Fixtures", "Library", "Patch", "Air"};
+    for (const std::string& n : names)
+      if (std::equal(n.begin(), n.end(), opt.tab.begin(), opt.tab.end(),
+                     [](char a, char b) { return std::tolower(a) == std::tolower(b); }))
+        gui.openTab = n;
+    if (gui.openTab.empty()) return Error{"", "--tab", "expected cues, fixtures, library, patch or air, not '" + opt.tab + "'"};
+  }
+  gui.recent = loadRecentFiles(recentFilesPath());
+  if (opt.artNet || opt.sacn) {
+    LiveOptions lo;
+    lo.udp.bindAddress = opt.bind;
+    lo.udp.artNet = opt.artNet;
+    lo.udp.sacn = opt.sacn;
+    auto r = LiveReceiver::open(gui.doc->show(), gui.doc->profiles(), lo);
+    if (!r) return r.error();
+    gui.live = std::move(*r);
+    gui.liveBind = opt.bind;
+  }
+  return Ok{};
+}
+
+void initImGui(Gui& gui) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // the layout is ours, not a file in the working folder
+  ImGui::StyleColorsDark();
+  ImGui::GetStyle().WindowRounding = 0.0f;
+  // Installed before ImGui's callbacks, which call it after their own.
+  glfwSetWindowUserPointer(gui.window, &gui);
+  glfwSetKeyCallback(gui.window, [](GLFWwindow* w, int key, int, int action, int mods) {
+    if (action == GLFW_PRESS) static_cast<Gui*>(glfwGetWindowUserPointer(w))->keys.push_back({key, mods});
+  });
+  ImGui_ImplGlfw_InitForOpenGL(gui.window, true);
+  ImGui_ImplOpenGL3_Init("#version 450");
+}
+
+// Every panel of one frame, from input to ImGui's draw lists.
+void drawPanels(Gui& gui, int winW, int winH) {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  if (!ImGui::IsAnyItemActive()) gui.mergeItem = 0;  // the next widget edit starts a new undo step
+  gui.layout = layoutFor(static_cast<float>(winW), static_cast<float>(winH), ImGui::GetFrameHeight());
+  gui.stage = gui.live ? gui.live->poll(0) : gui.doc->stageState(gui.nowS);
+
+  handleShortcuts(gui);
+  drawMenuBar(gui);
+  drawShowPanel(gui);
+  drawInspector(gui);
+  drawHelp(gui);
+  drawImportWarnings(gui);
+  drawFileDialogs(gui);
+  handleViewport(gui);
+  ImGui::Render();
+}
+
+// Two renderers: draft while anything moves, the chosen quality when still.
+struct ViewportRenderers {
+  std::unique_ptr<Renderer> draft, still;
+  int width = 0, height = 0;
+  Quality quality = Quality::Default;
+  const ShowDocument* doc = nullptr;
+
+  Status fit(Gui& gui, int vw, int vh) {
+    if (still && vw == width && vh == height && gui.quality == quality && doc == gui.doc.get()) return Ok{};
+    // A new document may have a new venue: the renderers are made for one venue.
+    auto d = Renderer::create(gui.doc->venue(), renderSettingsFor(Quality::Draft, vw, vh));
+    if (!d) return d.error();
+    auto s = Renderer::create(gui.doc->venue(), renderSettingsFor(gui.quality, vw, vh));
+    if (!s) return s.error();
+    draft = std::move(*d);
+    still = std::move(*s);
+    width = vw;
+    height = vh;
+    quality = gui.quality;
+    doc = gui.doc.get();
+    gui.stillFrames = 0;
+    return Ok{};
+  }
+};
+
+// What makes the stage change between frames: the view and the document's edits.
+struct ChangeWatch {
+  Orbit orbit{};
+  float fovDeg = 0.0f;
+  std::uint64_t revision = 0;
+
+  bool changing(const Gui& gui) {
+    const bool changed = gui.live || gui.doc->fading(gui.nowS) || !(gui.orbit == orbit) || gui.fovYDeg != fovDeg ||
+                         gui.doc->revision() != revision;
+    orbit = gui.orbit;
+    fovDeg = gui.fovYDeg;
+    revision = gui.doc->revision();
+    return changed;
+  }
+};
+
+// Refinement stops after this many still frames; the window then sleeps until an event (or a
+// tenth of a second, so that follows and fades started by the clock still run).
+constexpr int kMaxStillFrames = 64;
+
+// The stage into the viewport: draft while changing, accumulating at the chosen quality while
+// still, nothing new once settled. Returns whether the view has settled.
+Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watch, int vx, int vy, int vw, int vh) {
+  const auto t0 = std::chrono::steady_clock::now();
+  // Edits made this frame show this frame.
+  if (!gui.live && gui.doc->revision() != watch.revision) gui.stage = gui.doc->stageState(gui.nowS);
+  auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "");
+  if (!frameState) return frameState.error();
+  frameState->camera = gui.cameraState();
+  const bool changing = watch.changing(gui);
+  glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  Renderer* r = nullptr;
+  const bool settled = !changing && gui.stillFrames >= kMaxStillFrames;
+  if (changing) {
+    r = renderers.draft.get();
+    r->render(*frameState);
+    gui.stillFrames = 0;
+  } else {
+    r = renderers.still.get();
+    if (!settled) {
+      r->render(*frameState, gui.stillFrames > 0);  // keep adding jittered frames while still
+      ++gui.stillFrames;
+    }
+  }
+  r->drawDisplay({.exposureEv = gui.exposureEv, .bloom = gui.bloom}, 0, vx, vy, vw, vh);
+  if (!settled) gui.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return settled;
+}
+
 }  // namespace
 
 int runGui(const Args& args) {
@@ -128,38 +275,7 @@ int runGui(const Args& args) {
   auto opened = ShowDocument::open(opt.show);
   if (!opened) return fail(opened.error().str());
   gui.adopt(std::move(*opened));
-  if (!opt.cue.empty()) {
-    const CueList* list = gui.doc->cueList();
-    auto at = list ? findCue(*list, opt.cue) : Result<size_t>(Error{"", "--cue", "the show has no cue list"});
-    if (!at) return fail(at.error().str());
-    gui.doc->jumpTo(*at, 0.0);
-    gui.cueCursor = *at;
-  }
-  for (int id : opt.select) {
-    if (!gui.doc->show().findFixture(id)) return fail("--select: the show has no fixture " + std::to_string(id));
-    applyClickToSelection(gui.doc->selection, id, false, true);
-  }
-  if (opt.quality) gui.quality = *opt.quality;
-  gui.showHelp = opt.help;
-  if (!opt.tab.empty()) {
-    const std::string names[] = {"Cues", "Fixtures", "Library", "Patch", "Air"};
-    for (const std::string& n : names)
-      if (std::equal(n.begin(), n.end(), opt.tab.begin(), opt.tab.end(),
-                     [](char a, char b) { return std::tolower(a) == std::tolower(b); }))
-        gui.openTab = n;
-    if (gui.openTab.empty()) return fail("--tab: expected cues, fixtures, library, patch or air, not '" + opt.tab + "'");
-  }
-  gui.recent = loadRecentFiles(recentFilesPath());
-  if (opt.artNet || opt.sacn) {
-    LiveOptions lo;
-    lo.udp.bindAddress = opt.bind;
-    lo.udp.artNet = opt.artNet;
-    lo.udp.sacn = opt.sacn;
-    auto r = LiveReceiver::open(gui.doc->show(), gui.doc->profiles(), lo);
-    if (!r) return fail(r.error().str());
-    gui.live = std::move(*r);
-    gui.liveBind = opt.bind;
-  }
+  if (Status s = applyOptions(gui, opt); !s) return fail(s.error().str());
 
 #ifdef NDEBUG
   const bool debugGl = std::getenv("HAZE_GL_DEBUG") != nullptr;
@@ -170,35 +286,13 @@ int runGui(const Args& args) {
   if (!ctx) return fail(ctx.error().str());
   gui.window = (*ctx)->window();
   std::string title = gui.doc->title();
+  initImGui(gui);
 
-  IMGUI_CHECKVERSION();
-  ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // the layout is ours, not a file in the working folder
-  ImGui::StyleColorsDark();
-  ImGui::GetStyle().WindowRounding = 0.0f;
-  // Installed before ImGui's callbacks, which call it after their own.
-  glfwSetWindowUserPointer(gui.window, &gui);
-  glfwSetKeyCallback(gui.window, [](GLFWwindow* w, int key, int, int action, int mods) {
-    if (action == GLFW_PRESS) static_cast<Gui*>(glfwGetWindowUserPointer(w))->keys.push_back({key, mods});
-  });
-  ImGui_ImplGlfw_InitForOpenGL(gui.window, true);
-  ImGui_ImplOpenGL3_Init("#version 450");
-
-  // Two renderers: draft while anything moves, the chosen quality when still.
-  std::unique_ptr<Renderer> draft, still;
-  int rendererW = 0, rendererH = 0;
-  Quality rendererQuality = gui.quality;
-  const ShowDocument* rendererDoc = nullptr;
-  Orbit lastOrbit{};
-  float lastFov = 0.0f;
-  std::uint64_t lastRevision = 0;
+  ViewportRenderers renderers;
+  ChangeWatch watch;
   const auto start = std::chrono::steady_clock::now();
   int frame = 0;
   int exitCode = 0;
-
-  // Refinement stops after this many still frames; the window then sleeps until an event (or a
-  // tenth of a second, so that follows and fades started by the clock still run).
-  constexpr int kMaxStillFrames = 64;
   bool settled = false;
   while (true) {
     if (settled) glfwWaitEventsTimeout(0.1);
@@ -212,74 +306,25 @@ int runGui(const Args& args) {
       continue;
     }
     gui.nowS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    if (!ImGui::IsAnyItemActive()) gui.mergeItem = 0;  // the next widget edit starts a new undo step
-    gui.layout = layoutFor(static_cast<float>(winW), static_cast<float>(winH), ImGui::GetFrameHeight());
-    gui.stage = gui.live ? gui.live->poll(0) : gui.doc->stageState(gui.nowS);
-
-    handleShortcuts(gui);
-    drawMenuBar(gui);
-    drawShowPanel(gui);
-    drawInspector(gui);
-    drawHelp(gui);
-    drawImportWarnings(gui);
-    drawFileDialogs(gui);
-    handleViewport(gui);
-    ImGui::Render();
+    drawPanels(gui, winW, winH);
 
     // The viewport in framebuffer pixels (GL counts rows from the bottom).
     const float sx = static_cast<float>(fbW) / winW, sy = static_cast<float>(fbH) / winH;
     const Rect& vp = gui.layout.viewport;
     const int vx = static_cast<int>(vp.x * sx), vw = std::max(static_cast<int>(vp.w * sx), 1);
     const int vh = std::max(static_cast<int>(vp.h * sy), 1), vy = fbH - static_cast<int>((vp.y + vp.h) * sy);
-    if (!still || vw != rendererW || vh != rendererH || gui.quality != rendererQuality || rendererDoc != gui.doc.get()) {
-      // A new document may have a new venue: the renderers are made for one venue.
-      auto d = Renderer::create(gui.doc->venue(), renderSettingsFor(Quality::Draft, vw, vh));
-      if (!d) { exitCode = fail(d.error().str()); break; }
-      auto s = Renderer::create(gui.doc->venue(), renderSettingsFor(gui.quality, vw, vh));
-      if (!s) { exitCode = fail(s.error().str()); break; }
-      draft = std::move(*d);
-      still = std::move(*s);
-      rendererW = vw;
-      rendererH = vh;
-      rendererQuality = gui.quality;
-      rendererDoc = gui.doc.get();
-      gui.stillFrames = 0;
+    if (Status s = renderers.fit(gui, vw, vh); !s) {
+      exitCode = fail(s.error().str());
+      break;
     }
-
-    const auto t0 = std::chrono::steady_clock::now();
-    // Edits made this frame show this frame.
-    if (!gui.live && gui.doc->revision() != lastRevision) gui.stage = gui.doc->stageState(gui.nowS);
-    auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "");
-    if (!frameState) { exitCode = fail(frameState.error().str()); break; }
-    frameState->camera = gui.cameraState();
-    const bool changing = gui.live || gui.doc->fading(gui.nowS) || !(gui.orbit == lastOrbit) ||
-                          gui.fovYDeg != lastFov || gui.doc->revision() != lastRevision;
-    lastOrbit = gui.orbit;
-    lastFov = gui.fovYDeg;
-    lastRevision = gui.doc->revision();
-    glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    Renderer* r = nullptr;
-    settled = !changing && gui.stillFrames >= kMaxStillFrames;
-    if (changing) {
-      r = draft.get();
-      r->render(*frameState);
-      gui.stillFrames = 0;
-    } else {
-      r = still.get();
-      if (!settled) {
-        r->render(*frameState, gui.stillFrames > 0);  // keep adding jittered frames while still
-        ++gui.stillFrames;
-      }
+    auto drawn = drawStage(gui, renderers, watch, vx, vy, vw, vh);
+    if (!drawn) {
+      exitCode = fail(drawn.error().str());
+      break;
     }
-    r->drawDisplay({.exposureEv = gui.exposureEv, .bloom = gui.bloom}, 0, vx, vy, vw, vh);
+    settled = *drawn;
     glViewport(0, 0, fbW, fbH);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    if (!settled) gui.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
     if (gui.doc->title() != title) {
       title = gui.doc->title();

@@ -2,7 +2,7 @@
 // ambient light (physics.md), each a setAtmosphere command (a drag is one undo step); and the
 // view's render quality, exposure and bloom, which are not part of the show.
 #include "app/gui/gui.h"
-#include "app/udp_receiver.h"
+#include "shows/dmx/udp_receiver.h"
 
 namespace haze {
 

@@ -8,9 +8,9 @@
 #include <cstring>
 
 #include "app/gui/gui.h"
-#include "app/gui/recent_files.h"
-#include "app/udp_receiver.h"
-#include "shows/mvr_import.h"
+#include "shows/edit/recent_files.h"
+#include "shows/dmx/udp_receiver.h"
+#include "shows/import/mvr_import.h"
 
 namespace haze {
 

@@ -1,5 +1,5 @@
 // The fixture list: every fixture of the show with its profile and patch; click selects, Ctrl
-// toggles, Shift adds (the same rule as clicks in the viewport, app/picking.h).
+// toggles, Shift adds (the same rule as clicks in the viewport, shows/edit/picking.h).
 #include <cstdio>
 
 #include "app/gui/gui.h"

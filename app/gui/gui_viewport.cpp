@@ -4,7 +4,7 @@
 // its level, Ctrl: up and down, Alt: turn), dragging the end of a selected beam (aims it at the
 // venue point under the pointer, focus to point as it moves), and the overlay: a marker per fixture, the
 // selection highlighted with its name and beam axis, and the point under the pointer while
-// placing or focusing. The picking itself is app/picking.h (tested without a window).
+// placing or focusing. The picking itself is shows/edit/picking.h (tested without a window).
 #include <cmath>
 #include <cstdio>
 

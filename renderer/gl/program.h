@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 #include "renderer/gl/objects.h"
 
 namespace haze::gl {

@@ -8,7 +8,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "renderer/reference/bvh.h"
+#include "renderer/scene/bvh.h"
 #include "renderer/scene/frame_state.h"
 #include "renderer/scene/image.h"
 #include "renderer/scene/venue.h"

@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 
 namespace haze {
 

@@ -373,4 +373,31 @@ Result<Venue> loadVenue(const std::filesystem::path& file) {
   return venue;
 }
 
+Venue venueFromTriangles(std::vector<glm::vec3> trianglesM) {
+  Venue v;
+  v.materials.emplace_back();
+  trianglesM.resize(trianglesM.size() / 3 * 3);
+  if (trianglesM.empty()) return v;
+  Primitive p;
+  p.name = "triangles";
+  p.indices.resize(trianglesM.size());
+  for (size_t i = 0; i < trianglesM.size(); ++i) p.indices[i] = static_cast<uint32_t>(i);
+  glm::vec3 lo(trianglesM[0]), hi(trianglesM[0]);
+  for (const glm::vec3& q : trianglesM) {
+    lo = glm::min(lo, q);
+    hi = glm::max(hi, q);
+  }
+  p.normals.resize(trianglesM.size());
+  for (size_t i = 0; i < trianglesM.size(); i += 3) {
+    const glm::vec3 n = glm::cross(trianglesM[i + 1] - trianglesM[i], trianglesM[i + 2] - trianglesM[i]);
+    const float len = glm::length(n);
+    p.normals[i] = p.normals[i + 1] = p.normals[i + 2] = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+  }
+  p.positions = std::move(trianglesM);
+  v.primitives.push_back(std::move(p));
+  v.boundsMin = lo;
+  v.boundsMax = hi;
+  return v;
+}
+
 }  // namespace haze

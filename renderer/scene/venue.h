@@ -11,7 +11,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 
 namespace haze {
 
@@ -56,6 +56,10 @@ struct Venue {
   glm::vec3 albedo(const Primitive& p, glm::vec2 uv) const;
   glm::vec3 emission(const Primitive& p, glm::vec2 uv) const;
 };
+
+// A venue of bare triangles (3 corners each, metres; a trailing partial triangle is dropped):
+// one primitive of the default material, for ray casts over geometry that is no glTF yet.
+Venue venueFromTriangles(std::vector<glm::vec3> trianglesM);
 
 // .gltf (with its .bin and images) or .glb. Errors name the file and what is wrong.
 Result<Venue> loadVenue(const std::filesystem::path& file);

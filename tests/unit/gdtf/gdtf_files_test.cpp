@@ -13,6 +13,7 @@
 
 #include "fixtures/gdtf.h"
 #include "fixtures/gdtf_wheels.h"
+#include "fixtures/gobo_image.h"
 #include "unit/gdtf/zip_builder.h"
 
 namespace haze {
@@ -227,7 +228,7 @@ void expectGoboMatches(const std::string& gdtf, std::size_t wheel, std::size_t s
   const std::string shared = test::readFile(kGoboDir / copy);
   ASSERT_FALSE(shared.empty());
   EXPECT_EQ(archived, shared);
-  auto fromCopy = goboFromPng({reinterpret_cast<const std::uint8_t*>(shared.data()), shared.size()}, copy, copy);
+  auto fromCopy = goboFromImageBytes({reinterpret_cast<const std::uint8_t*>(shared.data()), shared.size()}, copy, copy);
   ASSERT_TRUE(fromCopy.ok()) << fromCopy.error().str();
   EXPECT_EQ((*fromCopy)->width, s.image->width);
   EXPECT_EQ((*fromCopy)->height, s.image->height);

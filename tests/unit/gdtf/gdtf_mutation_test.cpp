@@ -7,7 +7,7 @@
 #include <string>
 
 #include "fixtures/gdtf.h"
-#include "fixtures/zip_archive.h"
+#include "fixtures/core/zip_archive.h"
 #include "unit/gdtf/zip_builder.h"
 
 namespace haze {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "fixtures/gdtf.h"
-#include "fixtures/zip_archive.h"
+#include "fixtures/core/zip_archive.h"
 
 namespace haze {
 namespace {

@@ -81,7 +81,7 @@ TEST(BeamFrame, AGoboReadsAsDrawnFromBehindTheFixture) {
   gobo->transmittance.assign(64, 0.0f);
   for (int row = 0; row < 4; ++row)
     for (int col = 0; col < 4; ++col) gobo->transmittance[static_cast<size_t>(row * 8 + col)] = 1.0f;
-  Result<Distribution> d = parametricDistribution(40, 40, 1000);
+  Result<Distribution> d = parametricDistribution(36, 40, 1000);
   ASSERT_TRUE(d.ok());
   BeamState b;
   // Tilted 90 degrees: the beam turns from -Y to -Z, towards a wall at z = -10. Someone behind the

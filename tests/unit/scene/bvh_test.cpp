@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "renderer/reference/bvh.h"
+#include "renderer/scene/bvh.h"
 #include "unit/scene/test_scenes.h"
 
 namespace haze {

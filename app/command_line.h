@@ -1,0 +1,55 @@
+// The subcommands' command lines, read one way: named options (flags, text, a choice, numbers in
+// a range), positional arguments, --help. A mistake is one line on stderr, "haze CMD: what",
+// naming the option and what it needs, and the command exits with its error status.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/commands.h"
+
+namespace haze {
+
+class CommandLine {
+ public:
+  // `command` as in "haze render"; `usage` is printed as it is for --help / -h.
+  CommandLine(std::string command, std::string usage, int errorStatus = 1);
+
+  // `names` is one name or several separated by '|' ("-o|--output").
+  CommandLine& flag(const std::string& names, bool& dst);
+  CommandLine& text(const std::string& names, std::string& dst, const std::string& need);
+  CommandLine& choice(const std::string& names, std::string& dst, const std::vector<std::string>& choices);
+  CommandLine& number(const std::string& names, double& dst, double lo, double hi, const std::string& need);
+  CommandLine& integer(const std::string& names, int& dst, int lo, int hi, const std::string& need);
+  // Positional arguments in order; `what` names one in errors ("show"). A missing required one
+  // is an error, a second of the last kind is too.
+  CommandLine& positional(std::string& dst, const std::string& what, bool required = true);
+
+  // nullopt: go on with the command. A value: return it (0 after --help, else the error status).
+  std::optional<int> parse(const Args& args) const;
+  // "haze CMD: line" on stderr; returns the error status.
+  int fail(const std::string& line) const;
+
+ private:
+  struct Option {
+    std::vector<std::string> names;
+    bool takesValue = false;
+    std::string need;  // "--cue needs <need>"
+    std::function<bool(const std::string&)> set;  // false: the value is not acceptable
+  };
+  struct Positional {
+    std::string* dst;
+    std::string what;
+    bool required;
+  };
+  const Option* find(const std::string& name) const;
+
+  std::string command_, usage_;
+  int errorStatus_;
+  std::vector<Option> options_;
+  std::vector<Positional> positionals_;
+};
+
+}  // namespace haze

@@ -1,0 +1,32 @@
+// The stage state as JSON (see state_json.h).
+#include "app/state_json.h"
+
+#include <optional>
+#include <string>
+
+#include "shows/show_json.h"
+
+namespace haze {
+
+nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profiles, const StageState& state) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& [id, a] : state) {
+    std::optional<float> zoom = a.zoomDeg;
+    if (!zoom)
+      if (const FixtureDef* f = show.findFixture(id))
+        if (auto p = profiles.find(f->profile); p != profiles.end() && p->second) zoom = p->second->fieldAngleDeg;
+    nlohmann::ordered_json o;
+    o["intensity"] = tidy(a.intensity);
+    o["pan"] = tidy(a.panDeg);
+    o["tilt"] = tidy(a.tiltDeg);
+    o["color"] = {tidy(a.color.r), tidy(a.color.g), tidy(a.color.b)};
+    o["zoom"] = zoom ? nlohmann::ordered_json(tidy(*zoom)) : nlohmann::ordered_json(nullptr);
+    o["gobo"] = a.gobo;
+    o["gobo_rotation"] = tidy(a.goboRotationDeg);
+    o["iris"] = tidy(a.iris);
+    out[std::to_string(id)] = std::move(o);
+  }
+  return out;
+}
+
+}  // namespace haze

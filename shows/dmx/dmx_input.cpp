@@ -1,0 +1,159 @@
+// DMX input: parse, count, merge, decode. Counters are data (per-reason maps) so tests and the
+// CLI can report exactly why packets were dropped.
+#include "shows/dmx/dmx_input.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fixtures/dmx_decode.h"
+
+namespace haze {
+
+uint64_t DmxInputStats::malformedTotal() const {
+  uint64_t n = 0;
+  for (const auto& [reason, count] : malformed) n += count;
+  return n;
+}
+
+std::set<int> patchedUniverses(const Show& show) {
+  std::set<int> out;
+  for (const FixtureDef& f : show.fixtures) {
+    if (f.patch) out.insert(f.patch->universe);
+  }
+  return out;
+}
+
+StageState decodeStage(const Show& show, const ProfileSet& profiles,
+                       const std::function<const DmxBuffer*(int)>& universeLevels) {
+  StageState state;
+  for (const FixtureDef& f : show.fixtures) {
+    Attributes& a = state[f.id];
+    if (!f.patch || f.patch->address < 1 || f.patch->address > 512) continue;
+    auto pit = profiles.find(f.profile);
+    if (pit == profiles.end() || !pit->second) continue;
+    const Profile& profile = *pit->second;
+    // By name; a fixture that names no mode takes the profile's first.
+    const DmxMode* mode = nullptr;
+    for (const DmxMode& m : profile.modes) {
+      if (m.name == f.mode || (f.mode.empty() && !mode)) mode = &m;
+      if (m.name == f.mode) break;
+    }
+    if (!mode) continue;
+    const DmxBuffer* levels = universeLevels(f.patch->universe);
+    if (!levels) continue;
+    const size_t start = static_cast<size_t>(f.patch->address - 1);
+    const size_t count = std::min(static_cast<size_t>(mode->footprint()), levels->size() - start);
+    a = decodeDmx(profile, *mode, std::span<const uint8_t>(levels->data() + start, count));
+  }
+  return state;
+}
+
+DmxInput::DmxInput(const Show& show, const ProfileSet& profiles, DmxInputOptions options)
+    : show_(show), profiles_(profiles), options_(std::move(options)),
+      merger_([&] {
+        MergeOptions m = options_.merge;
+        if (m.universes.empty()) m.universes = patchedUniverses(show);
+        return m;
+      }()) {
+  state_ = decodeStage(show_, profiles_, [](int) -> const DmxBuffer* { return nullptr; });
+}
+
+void DmxInput::countGood(double nowS) {
+  ++stats_.good;
+  const auto tick = static_cast<int64_t>(std::floor(nowS * 10.0));
+  if (tick != rateBucketTick_) {
+    // Clear the buckets skipped since the last packet (all of them after a long gap).
+    for (int64_t t = rateBucketTick_ + 1; t <= tick && t <= rateBucketTick_ + 10; ++t) {
+      rateBuckets_[static_cast<size_t>(((t % 10) + 10) % 10)] = 0;
+    }
+    rateBucketTick_ = tick;
+  }
+  ++rateBuckets_[static_cast<size_t>(((tick % 10) + 10) % 10)];
+}
+
+double DmxInput::packetRate(double nowS) const {
+  const auto tick = static_cast<int64_t>(std::floor(nowS * 10.0));
+  if (tick - rateBucketTick_ >= 10) return 0.0;
+  uint64_t sum = 0;
+  // Buckets older than a second before now are stale.
+  for (int64_t t = tick - 9; t <= rateBucketTick_; ++t) {
+    sum += rateBuckets_[static_cast<size_t>(((t % 10) + 10) % 10)];
+  }
+  return static_cast<double>(sum);
+}
+
+void DmxInput::countMalformed(const std::string& reason, Error error, const char* protocol,
+                              uint32_t ip, uint16_t port) {
+  ++stats_.malformed[reason];
+  if (stats_.firstMalformed.size() >= DmxInputStats::kKeptMalformed) return;
+  error.file = std::string(protocol) + " from " + DmxSourceId::artNet(ip, port).str();
+  stats_.firstMalformed.push_back(std::move(error));
+}
+
+void DmxInput::receive(DmxProtocol protocol, std::span<const uint8_t> datagram,
+                       uint32_t senderIpv4, uint16_t senderPort, double nowS) {
+  ++stats_.received;
+  DmxFrame frame;
+  MergeVerdict verdict;
+  if (protocol == DmxProtocol::ArtNet) {
+    const ArtDmxParse p = parseArtDmx(datagram);
+    if (p.status == ArtNetStatus::Ignored) {
+      ++stats_.ignored;
+      return;
+    }
+    if (!p.ok()) {
+      countMalformed("artnet." + std::string(artNetStatusName(p.status)), artNetError(p), "Art-Net",
+                     senderIpv4, senderPort);
+      return;
+    }
+    frame.source = DmxSourceId::artNet(senderIpv4, senderPort);
+    frame.universe = p.packet.hazeUniverse();
+    frame.priority = 100;
+    if (p.packet.sequence != 0) frame.sequence = p.packet.sequence;
+    frame.slots = std::span<const uint8_t>(p.packet.slots.data(),
+                                           static_cast<size_t>(p.packet.length));
+    verdict = merger_.submit(frame, nowS);
+  } else {
+    const SacnParse p = parseSacn(datagram);
+    if (p.status == SacnStatus::Ignored) {
+      ++stats_.ignored;
+      return;
+    }
+    if (!p.ok()) {
+      countMalformed("sacn." + std::string(sacnStatusName(p.status)), sacnError(p), "sACN",
+                     senderIpv4, senderPort);
+      return;
+    }
+    if (p.packet.preview() && !options_.acceptPreview) {
+      ++stats_.ignored;
+      return;
+    }
+    frame.source = DmxSourceId::sacn(p.packet.cid);
+    frame.name = p.packet.sourceName;
+    frame.universe = p.packet.universe;
+    frame.priority = p.packet.priority;
+    frame.sequence = p.packet.sequence;
+    frame.terminated = p.packet.terminated();
+    frame.slots = std::span<const uint8_t>(p.packet.slots.data(),
+                                           static_cast<size_t>(p.packet.slotCount));
+    verdict = merger_.submit(frame, nowS);
+  }
+  switch (verdict) {
+    case MergeVerdict::Accepted: countGood(nowS); break;
+    case MergeVerdict::LateSequence: ++stats_.late; break;
+    case MergeVerdict::Terminated: ++stats_.terminated; break;
+    case MergeVerdict::UnwatchedUniverse: ++stats_.unwatched; break;
+    case MergeVerdict::SourcesExceeded: ++stats_.exceeded; break;
+  }
+}
+
+const StageState& DmxInput::poll(double nowS) {
+  merger_.expire(nowS);
+  if (merger_.generation() != decodedGeneration_) {
+    state_ = decodeStage(show_, profiles_, [&](int u) { return merger_.universe(u); });
+    decodedGeneration_ = merger_.generation();
+  }
+  return state_;
+}
+
+}  // namespace haze

@@ -1,0 +1,173 @@
+// POSIX UDP receive for Art-Net and sACN: non-blocking sockets, poll() with a timeout, a bounded
+// number of datagrams per pump so a flood cannot stall the frame loop.
+#include "shows/dmx/udp_receiver.h"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+
+namespace haze {
+
+namespace {
+
+std::string ipString(uint32_t hostOrder) {
+  in_addr a{};
+  a.s_addr = htonl(hostOrder);
+  char s[INET_ADDRSTRLEN] = {};
+  inet_ntop(AF_INET, &a, s, sizeof s);
+  return s;
+}
+
+// A non-blocking UDP socket bound to address:port; port 0 picks a free one.
+Result<int> bindUdp(uint32_t addressHostOrder, int port, bool reuse, const char* what) {
+  const int fd = ::socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+  if (fd < 0) return Error{"", "", std::string("cannot create the ") + what + " socket: " + std::strerror(errno)};
+  const int one = 1;
+  if (reuse) setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  const int rcvbuf = 1 << 20;  // bursts from a console's many universes
+  setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &rcvbuf, sizeof rcvbuf);
+  sockaddr_in sa{};
+  sa.sin_family = AF_INET;
+  sa.sin_port = htons(static_cast<uint16_t>(port));
+  sa.sin_addr.s_addr = htonl(addressHostOrder);
+  if (::bind(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0) {
+    const std::string reason = std::strerror(errno);
+    ::close(fd);
+    return Error{"", "", std::string("cannot listen for ") + what + " on " + ipString(addressHostOrder) + ":" +
+                             std::to_string(port) + ": " + reason +
+                             "; expected an address of this machine and a free port (is another receiver running?)"};
+  }
+  return fd;
+}
+
+int boundPort(int fd) {
+  sockaddr_in sa{};
+  socklen_t len = sizeof sa;
+  if (getsockname(fd, reinterpret_cast<sockaddr*>(&sa), &len) != 0) return 0;
+  return ntohs(sa.sin_port);
+}
+
+}  // namespace
+
+Result<std::unique_ptr<UdpReceiver>> UdpReceiver::open(const UdpReceiverOptions& o) {
+  in_addr bindAddr{};
+  if (inet_pton(AF_INET, o.bindAddress.c_str(), &bindAddr) != 1) {
+    return Error{"", "--bind", "'" + o.bindAddress + "' is not an IPv4 address; expected one like 127.0.0.1 or 192.168.1.20"};
+  }
+  for (int port : {o.artNetPort, o.sacnPort}) {
+    if (port < 0 || port > 65535) {
+      return Error{"", "", "port " + std::to_string(port) + " is out of range; expected 0..65535"};
+    }
+  }
+  const uint32_t address = ntohl(bindAddr.s_addr);
+  const bool loopback = (address >> 24) == 127;
+  std::unique_ptr<UdpReceiver> r(new UdpReceiver());
+  if (o.artNet) {
+    auto fd = bindUdp(address, o.artNetPort, false, "Art-Net");
+    if (!fd) return fd.error();
+    r->sockets_.push_back({*fd, DmxProtocol::ArtNet});
+    r->artNetPort_ = boundPort(*fd);
+  }
+  if (o.sacn) {
+    auto fd = bindUdp(address, o.sacnPort, false, "sACN");
+    if (!fd) return fd.error();
+    r->sockets_.push_back({*fd, DmxProtocol::Sacn});
+    r->sacnPort_ = boundPort(*fd);
+    if (!loopback || o.multicast) {
+      // A socket bound to a unicast address does not see multicast datagrams; one socket per
+      // group, bound to the group address itself, receives exactly that universe and nothing
+      // else, and the membership names the chosen interface.
+      int joined = 0;
+      for (int universe : o.sacnUniverses) {
+        if (universe < 1 || universe > 63999) continue;
+        if (joined >= o.maxMulticastGroups) {
+          r->notes_.push_back("more than " + std::to_string(o.maxMulticastGroups) +
+                              " sACN universes: the rest only by unicast");
+          break;
+        }
+        const uint32_t group = sacnMulticastGroup(universe);
+        const bool any = address == INADDR_ANY;
+        auto gfd = any ? Result<int>(r->sockets_.back().fd) : bindUdp(group, r->sacnPort_, true, "sACN multicast");
+        if (!gfd) {
+          r->notes_.push_back(gfd.error().message);
+          continue;
+        }
+        ip_mreq m{};
+        m.imr_multiaddr.s_addr = htonl(group);
+        m.imr_interface.s_addr = htonl(address);
+        if (setsockopt(*gfd, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m) != 0) {
+          r->notes_.push_back("cannot join " + ipString(group) + " on " + o.bindAddress + ": " +
+                              std::strerror(errno));
+          if (!any) ::close(*gfd);
+          continue;
+        }
+        if (!any) r->sockets_.push_back({*gfd, DmxProtocol::Sacn});
+        r->notes_.push_back("joined " + ipString(group) + " (sACN universe " + std::to_string(universe) + ")");
+        ++joined;
+      }
+    }
+  }
+  return r;
+}
+
+UdpReceiver::~UdpReceiver() {
+  for (const Socket& s : sockets_) ::close(s.fd);
+}
+
+int UdpReceiver::pump(DmxInput& input, double nowS, int waitMs, int maxDatagrams) {
+  if (sockets_.empty()) return 0;
+  std::vector<pollfd> fds;
+  for (const Socket& s : sockets_) fds.push_back({s.fd, POLLIN, 0});
+  const int ready = ::poll(fds.data(), fds.size(), waitMs);
+  if (ready <= 0) return 0;  // timeout, or EINTR from SIGINT: the caller's loop decides
+  int read = 0;
+  uint8_t buffer[2048];
+  for (size_t i = 0; i < fds.size() && read < maxDatagrams; ++i) {
+    if (!(fds[i].revents & POLLIN)) continue;
+    while (read < maxDatagrams) {
+      sockaddr_in from{};
+      socklen_t fromLen = sizeof from;
+      const ssize_t n = ::recvfrom(fds[i].fd, buffer, sizeof buffer, 0,
+                                   reinterpret_cast<sockaddr*>(&from), &fromLen);
+      if (n < 0) break;  // EAGAIN: drained (other errors: try again next pump)
+      ++read;
+      input.receive(sockets_[i].protocol, std::span<const uint8_t>(buffer, static_cast<size_t>(n)),
+                    ntohl(from.sin_addr.s_addr), ntohs(from.sin_port), nowS);
+    }
+  }
+  return read;
+}
+
+double LiveReceiver::nowS() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+Result<std::unique_ptr<LiveReceiver>> LiveReceiver::open(const Show& show, const ProfileSet& profiles,
+                                                         LiveOptions options) {
+  if (options.udp.sacnUniverses.empty()) options.udp.sacnUniverses = patchedUniverses(show);
+  auto udp = UdpReceiver::open(options.udp);
+  if (!udp) return udp.error();
+  std::unique_ptr<LiveReceiver> r(new LiveReceiver(show, profiles, options.input));
+  r->udp_ = std::move(*udp);
+  return r;
+}
+
+const StageState& LiveReceiver::poll(int waitMs) {
+  udp_->pump(input_, nowS(), waitMs);
+  // Whatever else arrived while the first batch was handled, without waiting again; bounded,
+  // so a flood still lets the frame go on.
+  for (int i = 0; i < 4 && udp_->pump(input_, nowS(), 0) > 0; ++i) {
+  }
+  return input_.poll(nowS());
+}
+
+double LiveReceiver::packetRate() const { return input_.packetRate(nowS()); }
+
+}  // namespace haze

@@ -1,0 +1,293 @@
+// ShowDocument (see show_document.h). The cue player keeps references into the show, so it is
+// rebuilt after every change and put back on the cue that was active.
+#include "shows/edit/show_document.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "shows/playback.h"
+#include "shows/show_save.h"
+
+namespace haze {
+
+namespace fs = std::filesystem;
+
+Result<std::unique_ptr<ShowDocument>> ShowDocument::open(const fs::path& file) {
+  std::unique_ptr<ShowDocument> d(new ShowDocument());
+  auto show = loadShow(file);
+  if (!show) return show.error();
+  d->show_ = std::move(*show);
+  auto profiles = loadProfiles(d->show_);
+  if (!profiles) return profiles.error();
+  d->profiles_ = std::move(*profiles);
+  if (!d->show_.venueGltf.empty()) {
+    auto venue = loadVenue(d->show_.resolve(d->show_.venueGltf));
+    if (!venue) return venue.error();
+    d->venue_ = std::move(*venue);
+  }
+  d->bvh_ = std::make_unique<Bvh>(d->venue_);
+  d->resetPlayer();
+  return d;
+}
+
+Result<std::unique_ptr<ShowDocument>> ShowDocument::blank(const ShowDocument* like) {
+  std::unique_ptr<ShowDocument> d(new ShowDocument());
+  if (like) {
+    // No file yet, so the venue is named by its absolute path until a save makes it relative.
+    if (!like->show_.venueGltf.empty())
+      d->show_.venueGltf = fs::absolute(like->show_.resolve(like->show_.venueGltf)).lexically_normal().string();
+    d->show_.cameras = like->show_.cameras;
+    d->show_.atmosphere = like->show_.atmosphere;
+    d->venue_ = like->venue_;
+  }
+  d->bvh_ = std::make_unique<Bvh>(d->venue_);
+  d->resetPlayer();
+  return d;
+}
+
+std::string ShowDocument::title() const {
+  return "haze - " + (untitled() ? std::string("untitled") : show_.file.filename().string()) + (modified() ? " *" : "");
+}
+
+namespace {
+
+bool sameCues(const std::vector<CueList>& a, const std::vector<CueList>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t l = 0; l < a.size(); ++l) {
+    if (a[l].name != b[l].name || a[l].cues.size() != b[l].cues.size()) return false;
+    for (size_t i = 0; i < a[l].cues.size(); ++i) {
+      const Cue &x = a[l].cues[i], &y = b[l].cues[i];
+      if (x.number != y.number || x.label != y.label || x.fadeS != y.fadeS || x.delayS != y.delayS ||
+          x.followS != y.followS || x.values != y.values)
+        return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+void ShowDocument::changed() {
+  ++revision_;
+  // Fixtures that no longer exist leave the selection.
+  std::erase_if(selection, [&](int id) { return show_.findFixture(id) == nullptr; });
+  // The player holds references into the cue lists and snapshots of their states.
+  if (!sameCues(show_.cueLists, playerCues_)) resetPlayer();
+}
+
+Status ShowDocument::run(std::unique_ptr<EditCommand> command, bool merge) {
+  EditTarget t = target();
+  Status s = history_.run(t, std::move(command), merge);
+  if (s) changed();
+  return s;
+}
+
+bool ShowDocument::undo() {
+  EditTarget t = target();
+  if (!history_.undo(t)) return false;
+  changed();
+  return true;
+}
+
+bool ShowDocument::redo() {
+  EditTarget t = target();
+  if (!history_.redo(t)) return false;
+  changed();
+  return true;
+}
+
+Result<std::string> ShowDocument::addProfileFile(const fs::path& file) {
+  auto profile = loadProfile(file);
+  if (!profile) return profile.error();
+  // The key: the file name without extension, lower case, made unique.
+  std::string stem = file.stem().string();
+  if (stem.ends_with(".haze")) stem.resize(stem.size() - 5);
+  std::string base;
+  for (char c : stem) base += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '-';
+  if (base.empty()) base = "profile";
+  std::string key = base;
+  for (int n = 2; show_.profiles.count(key) || profiles_.count(key); ++n) key = base + "-" + std::to_string(n);
+  std::error_code ec;
+  const fs::path abs = fs::absolute(file, ec).lexically_normal();
+  ProfileRef ref;
+  ref.path = untitled() ? abs.string()
+                        : abs.lexically_relative(fs::absolute(show_.file, ec).parent_path().lexically_normal()).string();
+  if (ref.path.empty()) ref.path = abs.string();
+  show_.profiles[key] = ref;
+  profiles_[key] = *profile;
+  libraryChanged_ = true;
+  ++revision_;
+  return key;
+}
+
+Result<int> ShowDocument::placeFixtureAt(const std::string& profileKey, const MountPose& pose) {
+  FixturePlacement p;
+  p.profile = profileKey;
+  p.positionM = pose.positionM;
+  p.rotationDeg = pose.rotationDeg;
+  const auto prof = profiles_.find(profileKey);
+  if (prof != profiles_.end() && prof->second && prof->second->modes.empty()) p.universe.reset();
+  const int id = nextFixtureId(show_);
+  Status s = run(placeFixture(p));
+  if (!s) return s.error();
+  selection = {id};
+  return id;
+}
+
+Result<std::vector<FocusResult>> ShowDocument::focusSelectionOn(const glm::vec3& pointM, const StageState& onStage,
+                                                                bool merge) {
+  if (selection.empty()) return Error{"", "focus", "select a fixture first, then click the point to aim it at"};
+  std::vector<FocusResult> results;
+  std::map<int, CueValues> values;
+  for (int id : selection) {
+    const FixtureDef* f = show_.findFixture(id);
+    if (!f) continue;
+    const auto prof = profiles_.find(f->profile);
+    if (prof == profiles_.end() || !prof->second) continue;
+    const auto st = onStage.find(id);
+    const Attributes now = st != onStage.end() ? st->second : Attributes{};
+    const FocusResult r = focusOnPoint(*f, *prof->second, pointM, now.panDeg, now.tiltDeg);
+    results.push_back(r);
+    CueValues v;
+    v.panDeg = r.panDeg;
+    v.tiltDeg = r.tiltDeg;
+    values[id] = v;
+  }
+  Status s = run(setProgrammer(std::move(values)), merge);
+  if (!s) return s.error();
+  return results;
+}
+
+Status ShowDocument::setSelectionValues(const CueValues& values, bool merge) {
+  if (selection.empty()) return Error{"", "programmer", "no fixture is selected"};
+  std::map<int, CueValues> all;
+  for (int id : selection) all[id] = values;
+  return run(setProgrammer(std::move(all)), merge);
+}
+
+Result<std::string> ShowDocument::recordCue(const std::string& afterNumber, const std::string& label) {
+  CueRecord r;
+  const CueList* list = cueList();
+  r.list = list ? list->name : "";
+  r.after = afterNumber;
+  if (r.after.empty() && list && !list->cues.empty()) r.after = list->cues.back().number;
+  r.label = label;
+  const size_t before = list ? list->cues.size() : 0;
+  Status s = run(haze::recordCue(std::move(r)));
+  if (!s) return s.error();
+  // The new cue is the one whose number no cue had before: find it by count and position.
+  list = cueList();
+  if (!list || list->cues.size() != before + 1) return Error{"", "record", "the cue list did not grow"};
+  if (afterNumber.empty()) return list->cues.back().number;
+  auto at = findCue(*list, afterNumber);
+  return at ? list->cues[*at + 1].number : list->cues.back().number;
+}
+
+Status ShowDocument::save(const fs::path& file, bool force) {
+  const fs::path to = file.empty() ? show_.file : file;
+  if (to.empty()) return Error{"", "save", "the show has no file yet: use Save as and give a path ending in .haze.json"};
+  Status s = saveShow(show_, to, SaveOptions{.force = force});
+  if (!s) return s;
+  history_.markSaved();
+  libraryChanged_ = false;
+  ++revision_;
+  return s;
+}
+
+std::set<int> patchConflicts(const Show& show, const ProfileSet& profiles) {
+  std::set<int> bad;
+  struct Span {
+    int id, from, to;
+  };
+  std::map<int, std::vector<Span>> byUniverse;
+  for (const FixtureDef& f : show.fixtures) {
+    if (!f.patch) continue;
+    const auto fp = modeFootprint(profiles, f.profile, f.mode);
+    const Span s{f.id, f.patch->address, f.patch->address + (fp ? *fp : 1) - 1};
+    if (s.to > 512 || s.from < 1) bad.insert(f.id);
+    for (const Span& o : byUniverse[f.patch->universe])
+      if (s.from <= o.to && o.from <= s.to) bad.insert({s.id, o.id});
+    byUniverse[f.patch->universe].push_back(s);
+  }
+  return bad;
+}
+
+// --- Playback. ---
+
+const CueList* ShowDocument::cueList() const { return show_.cueLists.empty() ? nullptr : &show_.cueLists.front(); }
+
+void ShowDocument::resetPlayer() {
+  const CueList* list = cueList();
+  std::optional<size_t> keep = player_ ? player_->currentCue() : lastCue_;
+  player_.reset();
+  playerCues_ = show_.cueLists;
+  if (!list) {
+    lastCue_.reset();
+    return;
+  }
+  player_ = std::make_unique<CuePlayer>(show_, profiles_, *list);
+  if (keep && !list->cues.empty()) {
+    player_->jumpTo(std::min(*keep, list->cues.size() - 1), lastNowS_);
+    lastGoAtS_ = -1e9;  // the fade, if one was running, is over: the cue is on stage in full
+  }
+  lastCue_ = player_->currentCue();
+}
+
+bool ShowDocument::go(double nowS) {
+  if (!player_ || !player_->go(nowS)) return false;
+  lastGoAtS_ = nowS;
+  lastCue_ = player_->currentCue();
+  return true;
+}
+
+bool ShowDocument::back(double nowS) {
+  if (!player_ || !player_->back(nowS)) return false;
+  lastGoAtS_ = nowS;
+  lastCue_ = player_->currentCue();
+  return true;
+}
+
+bool ShowDocument::gotoCue(size_t index, double nowS) {
+  if (!player_ || !player_->gotoCue(index, nowS)) return false;
+  lastGoAtS_ = nowS;
+  lastCue_ = player_->currentCue();
+  return true;
+}
+
+bool ShowDocument::jumpTo(size_t index, double nowS) {
+  if (!player_ || !player_->jumpTo(index, nowS)) return false;
+  lastGoAtS_ = -1e9;
+  lastCue_ = player_->currentCue();
+  return true;
+}
+
+std::optional<size_t> ShowDocument::currentCue() const { return player_ ? player_->currentCue() : std::nullopt; }
+
+double ShowDocument::fadeProgress(double nowS) const {
+  const CueList* list = cueList();
+  const auto c = currentCue();
+  if (!list || !c || *c >= list->cues.size()) return 1.0;
+  const Cue& cue = list->cues[*c];
+  return haze::fadeProgress(CueTiming{cue.delayS, cue.fadeS}, nowS - lastGoAtS_);
+}
+
+bool ShowDocument::fading(double nowS) const { return player_ && player_->fading(nowS); }
+
+StageState ShowDocument::stageState(double nowS) {
+  lastNowS_ = nowS;
+  StageState s = defaultState(show_);
+  if (player_) {
+    const auto followAt = player_->nextFollowAtS();
+    s = player_->state(nowS);
+    if (player_->currentCue() != lastCue_) {  // a follow fired
+      lastGoAtS_ = followAt.value_or(nowS);
+      lastCue_ = player_->currentCue();
+    }
+  }
+  // Fixtures placed or deleted since the player was built: at their defaults, or gone.
+  for (const auto& [id, a] : defaultState(show_)) s.try_emplace(id, a);
+  std::erase_if(s, [&](const auto& entry) { return show_.findFixture(entry.first) == nullptr; });
+  return withProgrammer(std::move(s), programmer_);
+}
+
+}  // namespace haze

@@ -1,0 +1,52 @@
+# The design's rule, checked at configure time: the pure-data libraries never reach GL, EGL,
+# GLFW or ImGui, however indirectly, and only the GUI reaches GLFW and ImGui. A link added
+# against the rule fails the configure step with the path that breaks it.
+set(HAZE_PURE_LIBRARIES haze_core haze_fixtures haze_scene haze_reference haze_shows haze_dmx haze_edit
+    haze_import)
+set(HAZE_GL_ONLY PkgConfig::EGL PkgConfig::OPENGL haze_gl haze_renderer haze_shaders haze_app)
+set(HAZE_GUI_ONLY glfw PkgConfig::IMGUI haze_gui)
+
+# Every target `target` links, directly or through others, as "a -> b -> c" paths in `out`.
+function(haze_link_closure target path out)
+  get_target_property(links ${target} LINK_LIBRARIES)
+  set(found)
+  if(links)
+    foreach(dep ${links})
+      string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" dep "${dep}")
+      list(APPEND found "${path} -> ${dep}")
+      if(TARGET ${dep} AND NOT "${path}" MATCHES " ${dep}( |$)")
+        get_target_property(kind ${dep} TYPE)
+        if(NOT kind STREQUAL "INTERFACE_LIBRARY" AND NOT kind STREQUAL "UNKNOWN_LIBRARY"
+           AND NOT kind STREQUAL "SHARED_LIBRARY")
+          haze_link_closure(${dep} "${path} -> ${dep}" sub)
+          list(APPEND found ${sub})
+        endif()
+      endif()
+    endforeach()
+  endif()
+  set(${out} ${found} PARENT_SCOPE)
+endfunction()
+
+function(haze_check_forbidden target forbidden why)
+  if(NOT TARGET ${target})
+    return()
+  endif()
+  haze_link_closure(${target} ${target} paths)
+  foreach(p ${paths})
+    foreach(bad ${forbidden})
+      if(p MATCHES "-> ${bad}$")
+        message(FATAL_ERROR "library rule broken: ${p} (${why}; docs/architecture.md)")
+      endif()
+    endforeach()
+  endforeach()
+endfunction()
+
+foreach(lib ${HAZE_PURE_LIBRARIES})
+  if(NOT TARGET ${lib})
+    message(FATAL_ERROR "library rule: ${lib} is listed as a pure library but not defined")
+  endif()
+  haze_check_forbidden(${lib} "${HAZE_GL_ONLY};${HAZE_GUI_ONLY}" "${lib} is pure data and must not reach GL or the GUI")
+endforeach()
+foreach(lib haze_app haze_renderer haze_gl haze_shaders)
+  haze_check_forbidden(${lib} "${HAZE_GUI_ONLY}" "only the GUI links GLFW and ImGui")
+endforeach()
