@@ -235,7 +235,15 @@ int runGui(const Args& args) {
     const Rect& vp = gui.layout.viewport;
     const int vx = static_cast<int>(vp.x * sx), vw = std::max(static_cast<int>(vp.w * sx), 1);
     const int vh = std::max(static_cast<int>(vp.h * sy), 1), vy = fbH - static_cast<int>((vp.y + vp.h) * sy);
-    if (!still || vw != rendererW || vh != rendererH || gui.quality != rendererQuality || rendererDoc != gui.doc.get()) {
+    const bool renderersFit = still && gui.quality == rendererQuality && rendererDoc == gui.doc.get();
+    if (renderersFit && (vw != rendererW || vh != rendererH)) {
+      // A resized viewport remakes only the renderers' targets; their programs are kept.
+      const Status d = draft->resize(vw, vh), s = still->resize(vw, vh);
+      if (!d || !s) { exitCode = fail((d ? s : d).error().str()); break; }
+      rendererW = vw;
+      rendererH = vh;
+      gui.stillFrames = 0;
+    } else if (!renderersFit) {
       // A new document may have a new venue: the renderers are made for one venue.
       auto d = Renderer::create(gui.doc->venue(), renderSettingsFor(Quality::Draft, vw, vh));
       if (!d) { exitCode = fail(d.error().str()); break; }
