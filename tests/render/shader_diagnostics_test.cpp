@@ -55,7 +55,28 @@ TEST_F(ShaderDiagnosticsTest, ErrorInAnIncludeNamesThatFileAndLine) {
   EXPECT_NE(message.find("shaders/broken.frag.glsl:9: error:"), std::string::npos) << message;
   EXPECT_FALSE(std::regex_search(message, std::regex(R"((^|\n)\d+:\d+\()")))
       << "no raw source-string numbers left: " << message;
-  gl::resetDebugErrors();  // the driver reports the failed compile as a debug error too
+}
+
+TEST_F(ShaderDiagnosticsTest, WarningsOfAProgramThatBuildsArePrintedOnce) {
+  files_["warns.frag.glsl"] =
+      "#include \"interface.h\"\n"
+      "layout(location = HAZE_FRAG_OUT) out vec4 outColor;\n"
+      "void main() {\n"
+      "  float never;\n"
+      "  outColor = vec4(never);\n"
+      "}\n";
+  const gl::ProgramDesc desc{.label = "warns", .vertex = "fullscreen.vert.glsl", .fragment = "warns.frag.glsl"};
+  ::testing::internal::CaptureStderr();
+  auto first = gl::buildProgram(desc, lookup());
+  const std::string printed = ::testing::internal::GetCapturedStderr();
+  ASSERT_TRUE(first.ok()) << first.error().str();
+  if (printed.empty()) GTEST_SKIP() << "this driver does not warn about an uninitialised variable";
+  EXPECT_NE(printed.find("shaders/warns.frag.glsl (warns)"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("shaders/warns.frag.glsl:5: warning"), std::string::npos) << printed;
+  ::testing::internal::CaptureStderr();
+  auto second = gl::buildProgram(desc, lookup());
+  EXPECT_TRUE(second.ok());
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << "the same program's warnings again";
 }
 
 TEST_F(ShaderDiagnosticsTest, MissingIncludeNamesTheIncludingLine) {
