@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "renderer/camera_uniforms.h"
+#include "renderer/scene/camera_basis.h"
 
 namespace haze {
 namespace {

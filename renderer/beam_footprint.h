@@ -9,11 +9,12 @@
 #include <glm/vec4.hpp>
 
 #include "renderer/scene/frame_state.h"
+#include "shaders/interface.h"
 
 namespace haze {
 
 struct BeamFootprint {
-  static constexpr int kMaxVertices = 24;
+  static constexpr int kMaxVertices = HAZE_FOOTPRINT_MAX_VERTICES;  // the planes shader's array
   bool visible = false;
   glm::vec4 rectNdc{-1, -1, 1, 1};        // the polygon's bounding rectangle
   std::array<glm::vec2, kMaxVertices> polygonNdc{};  // counter-clockwise, convex

@@ -10,13 +10,9 @@
 #include "renderer/beam_footprint.h"
 #include "renderer/camera_uniforms.h"
 #include "renderer/gl/program.h"
+#include "shaders/interface.h"
 
 namespace haze {
-namespace {
-
-constexpr GLuint kSceneDepthUnit = 5, kScatterUnit = 6, kScatterDepthUnit = 7;
-
-}  // namespace
 
 Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings& settings) {
   BeamPass p;
@@ -29,10 +25,6 @@ Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings&
     p.settings_.fused = false;
     p.settings_.jitter = false;
   }
-  p.width_ = width;
-  p.height_ = height;
-  p.lowW_ = std::max(1, (width + p.settings_.scatterDivisor - 1) / p.settings_.scatterDivisor);
-  p.lowH_ = std::max(1, (height + p.settings_.scatterDivisor - 1) / p.settings_.scatterDivisor);
 
   std::vector<std::string> defines;
   if (p.settings_.fused) defines.push_back("FUSED");
@@ -50,21 +42,31 @@ Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings&
   p.composite_ = std::move(*composite);
   p.scatterDepth_ = std::move(*depth);
 
-  p.scatter_ = gl::Texture(GL_TEXTURE_2D, "scatter");
-  glTextureStorage2D(p.scatter_.id(), 1, GL_RGBA32F, p.lowW_, p.lowH_);
-  glTextureParameteri(p.scatter_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(p.scatter_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   p.scatterFbo_ = gl::Framebuffer("scatter_fbo");
-  glNamedFramebufferTexture(p.scatterFbo_.id(), GL_COLOR_ATTACHMENT0, p.scatter_.id(), 0);
-  p.lowDepth_ = gl::Texture(GL_TEXTURE_2D, "scatter_depth");
-  glTextureStorage2D(p.lowDepth_.id(), 1, GL_R32F, p.lowW_, p.lowH_);
-  glTextureParameteri(p.lowDepth_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(p.lowDepth_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   p.lowDepthFbo_ = gl::Framebuffer("scatter_depth_fbo");
-  glNamedFramebufferTexture(p.lowDepthFbo_.id(), GL_COLOR_ATTACHMENT0, p.lowDepth_.id(), 0);
   p.vao_ = gl::VertexArray("planes_vao");
   p.scattered_ = gl::SamplesQuery("scattering_fragments");
+  p.resize(width, height);
   return p;
+}
+
+void BeamPass::resize(int width, int height) {
+  if (scatter_ && width == width_ && height == height_) return;
+  width_ = width;
+  height_ = height;
+  lowW_ = std::max(1, (width + settings_.scatterDivisor - 1) / settings_.scatterDivisor);
+  lowH_ = std::max(1, (height + settings_.scatterDivisor - 1) / settings_.scatterDivisor);
+  scatter_ = gl::Texture(GL_TEXTURE_2D, "scatter");
+  glTextureStorage2D(scatter_.id(), 1, GL_RGBA32F, lowW_, lowH_);
+  glTextureParameteri(scatter_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(scatter_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glNamedFramebufferTexture(scatterFbo_.id(), GL_COLOR_ATTACHMENT0, scatter_.id(), 0);
+  lowDepth_ = gl::Texture(GL_TEXTURE_2D, "scatter_depth");
+  glTextureStorage2D(lowDepth_.id(), 1, GL_R32F, lowW_, lowH_);
+  glTextureParameteri(lowDepth_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(lowDepth_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glNamedFramebufferTexture(lowDepthFbo_.id(), GL_COLOR_ATTACHMENT0, lowDepth_.id(), 0);
+  accumulated_ = 0;  // what was accumulated was for the old size
 }
 
 uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, GLuint sceneDepth,
@@ -72,7 +74,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, G
   const MediumState& med = frame.medium;
   if (med.scattering <= 0.0f || frame.beams.empty()) return 0;
   const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
-  glBindTextureUnit(kSceneDepthUnit, sceneDepth);
+  glBindTextureUnit(HAZE_UNIT_SCENE_DEPTH, sceneDepth);
   glBindVertexArray(vao_.id());
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
@@ -99,16 +101,16 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, G
   const GLuint prog = planes_.id();
   glUseProgram(prog);
   setCameraUniforms(prog, frame.camera, aspect);
-  glProgramUniform1f(prog, 3, med.scattering);
-  glProgramUniform1f(prog, 4, med.extinction());
-  glProgramUniform2f(prog, 5, static_cast<float>(lowW_), static_cast<float>(lowH_));
-  glProgramUniform1i(prog, 7, settings_.jitter ? 1 : 0);
-  glProgramUniform1i(prog, 8, settings_.planes);
-  glProgramUniform1i(prog, 9, settings_.minSamplesPerChord);
-  glProgramUniform2i(prog, 10, settings_.lattice, settings_.lattice);
-  glProgramUniform1i(prog, 25, static_cast<int>(med.phase));
-  glProgramUniform1f(prog, 26, med.g);
-  beams.bind(0, 1, 2);
+  glProgramUniform1f(prog, HAZE_LOC_SCATTER_SIGMA_S, med.scattering);
+  glProgramUniform1f(prog, HAZE_LOC_SCATTER_SIGMA_T, med.extinction());
+  glProgramUniform2f(prog, HAZE_LOC_SCATTER_TARGET_SIZE, static_cast<float>(lowW_), static_cast<float>(lowH_));
+  glProgramUniform1i(prog, HAZE_LOC_SCATTER_JITTER, settings_.jitter ? 1 : 0);
+  glProgramUniform1i(prog, HAZE_LOC_SCATTER_PLANES, settings_.planes);
+  glProgramUniform1i(prog, HAZE_LOC_SCATTER_MIN_SAMPLES, settings_.minSamplesPerChord);
+  glProgramUniform2i(prog, HAZE_LOC_SCATTER_LATTICE, settings_.lattice, settings_.lattice);
+  glProgramUniform1i(prog, HAZE_LOC_PHASE, static_cast<int>(med.phase));  // Phase's values are HAZE_PHASE_*
+  glProgramUniform1f(prog, HAZE_LOC_PHASE_G, med.g);
+  beams.bind();
 
   // Each cone only as far as it can light anything (its shadow map's farthest surface).
   std::vector<BeamFootprint> footprints(frame.beams.size());
@@ -123,15 +125,16 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, G
   for (int f = 0; f < settings_.frames; ++f) {
     // Golden-ratio steps give well-spread offsets for any number of accumulated frames.
     const float jitter = std::fmod(static_cast<float>(accumulated_) * 0.6180339887f, 1.0f);
-    glProgramUniform1f(prog, 6, jitter);
+    glProgramUniform1f(prog, HAZE_LOC_SCATTER_FRAME_JITTER, jitter);
     for (size_t i = 0; i < frame.beams.size(); ++i) {
       const BeamFootprint& fp = footprints[i];
       if (!fp.visible) continue;
       const float dz = (fp.zFar - fp.zNear) / static_cast<float>(settings_.planes);
-      glProgramUniform4fv(prog, 0, 1, glm::value_ptr(fp.rectNdc));
-      if (settings_.lattice == 0) glProgramUniform2fv(prog, 30, fp.vertexCount, glm::value_ptr(fp.polygonNdc[0]));
-      glProgramUniform2f(prog, 1, fp.zNear, dz);
-      glProgramUniform1i(prog, 2, static_cast<int>(i));
+      glProgramUniform4fv(prog, HAZE_LOC_PLANES_RECT_NDC, 1, glm::value_ptr(fp.rectNdc));
+      if (settings_.lattice == 0)
+        glProgramUniform2fv(prog, HAZE_LOC_PLANES_POLYGON_NDC, fp.vertexCount, glm::value_ptr(fp.polygonNdc[0]));
+      glProgramUniform2f(prog, HAZE_LOC_SCATTER_DEPTH_RANGE, fp.zNear, dz);
+      glProgramUniform1i(prog, HAZE_LOC_SCATTER_BEAM, static_cast<int>(i));
       const int instances = settings_.fused ? 1 : settings_.planes;
       double px = 0.0;
       if (settings_.lattice > 0) {  // the paper's lattice spans the bounding rectangle
@@ -152,10 +155,10 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, G
   glViewport(0, 0, width_, height_);
   glUseProgram(composite_.id());
   setCameraUniforms(composite_.id(), frame.camera, aspect);
-  glProgramUniform1f(composite_.id(), 0, 1.0f / static_cast<float>(accumulated_));
-  glProgramUniform1i(composite_.id(), 1, settings_.scatterDivisor > 1 ? 1 : 0);
-  glBindTextureUnit(kScatterUnit, scatter_.id());
-  glBindTextureUnit(kScatterDepthUnit, lowDepth_.id());
+  glProgramUniform1f(composite_.id(), HAZE_LOC_COMPOSITE_SCALE, 1.0f / static_cast<float>(accumulated_));
+  glProgramUniform1i(composite_.id(), HAZE_LOC_COMPOSITE_UPSAMPLE, settings_.scatterDivisor > 1 ? 1 : 0);
+  glBindTextureUnit(HAZE_UNIT_SCATTER, scatter_.id());
+  glBindTextureUnit(HAZE_UNIT_SCATTER_DEPTH, lowDepth_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_BLEND);
   return fragments;

@@ -37,6 +37,8 @@ struct BeamPassSettings {
 class BeamPass {
  public:
   static Result<BeamPass> create(int width, int height, const BeamPassSettings& settings);
+  // For a new target size: the scattering buffers are made again, the programs kept.
+  void resize(int width, int height);
 
   // Adds in-scattering into radianceFbo (whose depth texture is sceneDepth). With
   // accumulate, the scattering of earlier calls is kept and this call's frames (jittered on

@@ -81,7 +81,7 @@ float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float ne
   const float one = 1.0f;
   glClearNamedFramebufferfv(shadowFbo_.id(), GL_DEPTH, 0, &one);
   glUseProgram(program.id());
-  glProgramUniformMatrix4fv(program.id(), 0, 1, GL_FALSE, glm::value_ptr(viewProj));
+  glProgramUniformMatrix4fv(program.id(), HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // surfaces are two-sided (physics.md)
@@ -149,10 +149,10 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
   return stats;
 }
 
-void BeamResources::bind(GLuint beamsBinding, GLuint lightMapUnit, GLuint shadowMapUnit) const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, beamsBinding, ssbo_.id());
-  glBindTextureUnit(lightMapUnit, lightMaps_.id());
-  glBindTextureUnit(shadowMapUnit, shadowMaps_.id());
+void BeamResources::bind() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HAZE_SSBO_BEAMS, ssbo_.id());
+  glBindTextureUnit(HAZE_UNIT_LIGHT_MAPS, lightMaps_.id());
+  glBindTextureUnit(HAZE_UNIT_SHADOW_MAPS, shadowMaps_.id());
 }
 
 }  // namespace haze

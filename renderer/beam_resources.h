@@ -13,19 +13,12 @@
 #include "renderer/gl/objects.h"
 #include "renderer/gpu_venue.h"
 #include "renderer/scene/frame_state.h"
+#include "shaders/interface.h"
 
 namespace haze {
 
-// Mirrors `struct Beam` in shaders/beams.glsl (std430).
-struct GpuBeam {
-  glm::vec4 lensPos;   // xyz lens position, w = cos(cutoff half-angle)
-  glm::vec4 xb;        // xyz reference axis, w = uv scale: 1 / (tan(F/2) * extent)
-  glm::vec4 yb;        // xyz, w = light-map layer
-  glm::vec4 zb;        // xyz beam axis, w = shadow-map layer
-  glm::vec4 color;     // rgb = dimmer * colour filter, w = tan(cutoff)
-  glm::mat4 shadowViewProj;
-};
-static_assert(sizeof(GpuBeam) == 144, "GpuBeam must match struct Beam in shaders/beams.glsl");
+// One element of the beams storage buffer: the struct the shaders read (shaders/interface.h).
+using GpuBeam = gpu::Beam;
 
 struct BeamResourceSettings {
   int lightMapSize = 512;
@@ -44,7 +37,8 @@ class BeamResources {
   // Brings light maps, shadow maps and the storage buffer up to date with frame.beams.
   BeamUpdateStats update(const FrameState& frame, const GpuVenue& venue, const gl::Program& shadowProgram);
 
-  void bind(GLuint beamsBinding, GLuint lightMapUnit, GLuint shadowMapUnit) const;
+  // The storage buffer, light maps and shadow maps at their shaders/interface.h bindings.
+  void bind() const;
   int count() const { return static_cast<int>(gpuBeams_.size()); }
   const std::vector<GpuBeam>& beams() const { return gpuBeams_; }
   const BeamResourceSettings& settings() const { return settings_; }

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+
+#include "shaders/interface.h"
 
 namespace haze {
 namespace {
@@ -12,6 +15,9 @@ struct Vertex {
   float u, v;
 };
 static_assert(sizeof(Vertex) == 32, "venue vertex layout is read by venue.vert.glsl");
+
+// The vertex array's one buffer binding point (a C++-side slot, not a shader interface).
+constexpr GLuint kVertexBufferBinding = 0;
 
 }  // namespace
 
@@ -30,14 +36,20 @@ GpuVenue::GpuVenue(const Venue& venue) : boundsMin_(venue.boundsMin), boundsMax_
   }
   glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(verts.size() * sizeof(Vertex)), verts.data(), 0);
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(idx.size() * sizeof(uint32_t)), idx.data(), 0);
-  glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(Vertex));
+  glVertexArrayVertexBuffer(vao_.id(), kVertexBufferBinding, vertices_.id(), 0, sizeof(Vertex));
   glVertexArrayElementBuffer(vao_.id(), indices_.id());
-  const GLuint offsets[3] = {0, 12, 24};
-  const GLint sizes[3] = {3, 3, 2};
-  for (GLuint a = 0; a < 3; ++a) {
-    glEnableVertexArrayAttrib(vao_.id(), a);
-    glVertexArrayAttribFormat(vao_.id(), a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
-    glVertexArrayAttribBinding(vao_.id(), a, 0);
+  struct Attribute {
+    GLuint location;
+    GLint size;
+    GLuint offset;
+  };
+  const Attribute attributes[] = {{HAZE_ATTR_POSITION, 3, offsetof(Vertex, position)},
+                                  {HAZE_ATTR_NORMAL, 3, offsetof(Vertex, normal)},
+                                  {HAZE_ATTR_UV, 2, offsetof(Vertex, u)}};
+  for (const Attribute& a : attributes) {
+    glEnableVertexArrayAttrib(vao_.id(), a.location);
+    glVertexArrayAttribFormat(vao_.id(), a.location, a.size, GL_FLOAT, GL_FALSE, a.offset);
+    glVertexArrayAttribBinding(vao_.id(), a.location, kVertexBufferBinding);
   }
 
   for (const Texture& t : venue.textures) {

@@ -12,11 +12,15 @@ Result<LightTiles> LightTiles::create(int width, int height) {
   auto program = gl::buildProgram({.label = "light_tiles", .compute = "light_tiles.comp.glsl"});
   if (!program) return program.error();
   t.program_ = std::move(*program);
-  t.width_ = width;
-  t.height_ = height;
-  t.columns_ = (width + kTilePx - 1) / kTilePx;
-  t.rows_ = (height + kTilePx - 1) / kTilePx;
+  t.resize(width, height);
   return t;
+}
+
+void LightTiles::resize(int width, int height) {
+  width_ = width;
+  height_ = height;
+  columns_ = (width + kTilePx - 1) / kTilePx;
+  rows_ = (height + kTilePx - 1) / kTilePx;
 }
 
 void LightTiles::update(const CameraState& camera, int beamCount) {
@@ -30,15 +34,16 @@ void LightTiles::update(const CameraState& camera, int beamCount) {
   const GLuint prog = program_.id();
   glUseProgram(prog);
   setCameraUniforms(prog, camera, static_cast<float>(width_) / static_cast<float>(height_));
-  glProgramUniform2i(prog, 0, width_, height_);
-  glProgramUniform1i(prog, 1, beamCount);
-  glProgramUniform1i(prog, 2, maskWords_);
-  glProgramUniform2i(prog, 3, columns_, rows_);
-  bind(3);
-  glDispatchCompute(static_cast<GLuint>((columns_ + 7) / 8), static_cast<GLuint>(rows_), 1);
+  glProgramUniform2i(prog, HAZE_LOC_TILES_TARGET_SIZE, width_, height_);
+  glProgramUniform1i(prog, HAZE_LOC_TILES_BEAM_COUNT, beamCount);
+  glProgramUniform1i(prog, HAZE_LOC_TILES_MASK_WORDS, maskWords_);
+  glProgramUniform2i(prog, HAZE_LOC_TILES_GRID, columns_, rows_);
+  bind();
+  glDispatchCompute(static_cast<GLuint>((columns_ + HAZE_TILE_GROUP_X - 1) / HAZE_TILE_GROUP_X),
+                    static_cast<GLuint>(rows_), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void LightTiles::bind(GLuint binding) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, masks_.id()); }
+void LightTiles::bind() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HAZE_SSBO_TILE_MASKS, masks_.id()); }
 
 }  // namespace haze

@@ -6,20 +6,23 @@
 #include "fixtures/core/result.h"
 #include "renderer/gl/objects.h"
 #include "renderer/scene/frame_state.h"
+#include "shaders/interface.h"
 
 namespace haze {
 
 class LightTiles {
  public:
-  static constexpr int kTilePx = 16;
+  static constexpr int kTilePx = HAZE_TILE_PX;
 
   static Result<LightTiles> create(int width, int height);
+  // For a new target size; the program is kept.
+  void resize(int width, int height);
 
   // Fills the masks from the scene depth texture, for `beamCount` beams of the beams buffer
   // (which must be bound at its binding, with the scene depth at camera.glsl's unit).
   void update(const CameraState& camera, int beamCount);
-  // The masks' buffer at a storage-buffer binding.
-  void bind(GLuint binding) const;
+  // The masks' buffer at its shaders/interface.h binding, for the surface pass.
+  void bind() const;
   int columns() const { return columns_; }
   int maskWords() const { return maskWords_; }
 

@@ -7,7 +7,6 @@
 
 #include <glm/geometric.hpp>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "renderer/beam_pass.h"
@@ -15,22 +14,20 @@
 #include "renderer/gl/program.h"
 #include "renderer/gpu_venue.h"
 #include "renderer/light_tiles.h"
+#include "renderer/scene/camera_basis.h"
+#include "shaders/interface.h"
 
 namespace haze {
 namespace {
-
-constexpr GLuint kBeamsBinding = 0, kLightMapUnit = 1, kShadowMapUnit = 2, kBaseTexUnit = 3, kEmissiveTexUnit = 4;
-constexpr GLuint kSceneDepthUnit = 5, kTileMasksBinding = 3;
 
 double msSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-glm::mat4 cameraViewProjection(const CameraState& c, int width, int height) {
-  const glm::mat4 view = glm::lookAt(c.position, c.target, c.up);
-  const glm::mat4 proj = glm::perspective(glm::radians(c.fovYDeg), static_cast<float>(width) / height,
-                                          c.nearM, c.farM);
-  return proj * view;
+Status checkSize(int width, int height) {
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+    return Error{"", "", "image size must be between 1x1 and 16384x16384"};
+  return Ok{};
 }
 
 }  // namespace
@@ -50,15 +47,44 @@ struct Renderer::Impl {
 
   Impl(const Venue& v, const RenderSettings& s)
       : venue(v), beams(BeamResourceSettings{s.lightMapSize, s.shadowMapSize}) {}
+
+  // (Re)makes the targets whose size is the image's; nothing else depends on it.
+  Status allocateTargets(int w, int h);
 };
+
+Status Renderer::Impl::allocateTargets(int w, int h) {
+  radiance = gl::Texture(GL_TEXTURE_2D, "radiance");
+  // Mip levels for bloom only (made on demand); everything else uses level 0.
+  int levels = 1;
+  while ((std::max(w, h) >> levels) > 0) ++levels;
+  glTextureStorage2D(radiance.id(), levels, GL_RGBA32F, w, h);
+  glTextureParameteri(radiance.id(), GL_TEXTURE_MAX_LEVEL, levels - 1);
+  glTextureParameteri(radiance.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(radiance.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  depth = gl::Texture(GL_TEXTURE_2D, "scene_depth");
+  glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT32F, w, h);
+  glTextureParameteri(depth.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(depth.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glNamedFramebufferTexture(radianceOnlyFbo.id(), GL_COLOR_ATTACHMENT0, radiance.id(), 0);
+  glNamedFramebufferTexture(sceneFbo.id(), GL_COLOR_ATTACHMENT0, radiance.id(), 0);
+  glNamedFramebufferTexture(sceneFbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+  display = gl::Texture(GL_TEXTURE_2D, "display");
+  glTextureStorage2D(display.id(), 1, GL_RGBA8, w, h);
+  glNamedFramebufferTexture(displayFbo.id(), GL_COLOR_ATTACHMENT0, display.id(), 0);
+  if (glCheckNamedFramebufferStatus(sceneFbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
+      glCheckNamedFramebufferStatus(displayFbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    return Error{"", "", "the GL driver cannot render to RGBA32F and DEPTH32F targets"};
+  beamPass.resize(w, h);
+  tiles.resize(w, h);
+  return Ok{};
+}
 
 Renderer::Renderer(std::unique_ptr<Impl> impl, const RenderSettings& settings)
     : impl_(std::move(impl)), settings_(settings) {}
 Renderer::~Renderer() = default;
 
 Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const RenderSettings& settings) {
-  if (settings.width <= 0 || settings.height <= 0 || settings.width > 16384 || settings.height > 16384)
-    return Error{"", "", "image size must be between 1x1 and 16384x16384"};
+  if (Status size = checkSize(settings.width, settings.height); !size) return size.error();
   auto impl = std::make_unique<Impl>(venue, settings);
   auto shadow = gl::buildProgram({.label = "shadow_depth", .vertex = "venue.vert.glsl"});
   if (!shadow) return shadow.error();
@@ -84,33 +110,21 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   if (!tiles) return tiles.error();
   impl->tiles = std::move(*tiles);
 
-  const int w = settings.width, h = settings.height;
-  impl->radiance = gl::Texture(GL_TEXTURE_2D, "radiance");
-  // Mip levels for bloom only (made on demand); everything else uses level 0.
-  int levels = 1;
-  while ((std::max(w, h) >> levels) > 0) ++levels;
-  glTextureStorage2D(impl->radiance.id(), levels, GL_RGBA32F, w, h);
-  glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MAX_LEVEL, levels - 1);
   glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
   glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(impl->radiance.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  impl->depth = gl::Texture(GL_TEXTURE_2D, "scene_depth");
-  glTextureStorage2D(impl->depth.id(), 1, GL_DEPTH_COMPONENT32F, w, h);
-  glTextureParameteri(impl->depth.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(impl->depth.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glNamedFramebufferTexture(impl->radianceOnlyFbo.id(), GL_COLOR_ATTACHMENT0, impl->radiance.id(), 0);
-  glNamedFramebufferTexture(impl->sceneFbo.id(), GL_COLOR_ATTACHMENT0, impl->radiance.id(), 0);
-  glNamedFramebufferTexture(impl->sceneFbo.id(), GL_DEPTH_ATTACHMENT, impl->depth.id(), 0);
-  impl->display = gl::Texture(GL_TEXTURE_2D, "display");
-  glTextureStorage2D(impl->display.id(), 1, GL_RGBA8, w, h);
-  glNamedFramebufferTexture(impl->displayFbo.id(), GL_COLOR_ATTACHMENT0, impl->display.id(), 0);
-  if (glCheckNamedFramebufferStatus(impl->sceneFbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
-      glCheckNamedFramebufferStatus(impl->displayFbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    return Error{"", "", "the GL driver cannot render to RGBA32F and DEPTH32F targets"};
+  if (Status targets = impl->allocateTargets(settings.width, settings.height); !targets) return targets.error();
   return std::unique_ptr<Renderer>(new Renderer(std::move(impl), settings));
+}
+
+Status Renderer::resize(int width, int height) {
+  if (Status size = checkSize(width, height); !size) return size;
+  if (width == settings_.width && height == settings_.height) return Ok{};
+  if (Status targets = impl_->allocateTargets(width, height); !targets) return targets;
+  settings_.width = width;
+  settings_.height = height;
+  return Ok{};
 }
 
 void Renderer::render(const FrameState& frame, bool accumulate) {
@@ -140,9 +154,9 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glDisable(GL_BLEND);
 
   // Depth first, so the lighting below runs once per pixel, not once per overlapping surface.
-  const glm::mat4 viewProj = cameraViewProjection(frame.camera, w, h);
+  const glm::mat4 viewProj = cameraViewProjection(frame.camera, static_cast<float>(w) / static_cast<float>(h));
   glUseProgram(m.shadowProgram.id());
-  glProgramUniformMatrix4fv(m.shadowProgram.id(), 0, 1, GL_FALSE, glm::value_ptr(viewProj));
+  glProgramUniformMatrix4fv(m.shadowProgram.id(), HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   m.venue.bind();
   for (const GpuVenue::Draw& d : m.venue.draws()) m.venue.draw(d);
@@ -150,31 +164,33 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
 
-  m.beams.bind(kBeamsBinding, kLightMapUnit, kShadowMapUnit);
+  m.beams.bind();
   const bool tiled = settings_.tiledSurfaces && m.beams.count() > 0;
   if (tiled) {
-    glBindTextureUnit(kSceneDepthUnit, m.depth.id());
+    glBindTextureUnit(HAZE_UNIT_SCENE_DEPTH, m.depth.id());
     m.tiles.update(frame.camera, m.beams.count());
-    m.tiles.bind(kTileMasksBinding);
+    m.tiles.bind();
   }
   const GLuint prog = m.surfaceProgram.id();
   glUseProgram(prog);
-  glProgramUniformMatrix4fv(prog, 0, 1, GL_FALSE, glm::value_ptr(viewProj));
-  glProgramUniform3fv(prog, 1, 1, glm::value_ptr(frame.camera.position));
-  glProgramUniform1f(prog, 2, sigmaT);
-  glProgramUniform3fv(prog, 3, 1, glm::value_ptr(med.ambient));
-  glProgramUniform1i(prog, 8, m.beams.count());
-  glProgramUniform1i(prog, 9, tiled ? m.tiles.columns() : 0);
-  glProgramUniform1i(prog, 10, m.tiles.maskWords());
+  glProgramUniformMatrix4fv(prog, HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
+  glProgramUniform3fv(prog, HAZE_LOC_SURFACE_EYE, 1, glm::value_ptr(frame.camera.position));
+  glProgramUniform1f(prog, HAZE_LOC_SURFACE_SIGMA_T, sigmaT);
+  glProgramUniform3fv(prog, HAZE_LOC_SURFACE_AMBIENT, 1, glm::value_ptr(med.ambient));
+  glProgramUniform1i(prog, HAZE_LOC_SURFACE_BEAM_COUNT, m.beams.count());
+  glProgramUniform1i(prog, HAZE_LOC_SURFACE_TILE_COLUMNS, tiled ? m.tiles.columns() : 0);
+  glProgramUniform1i(prog, HAZE_LOC_SURFACE_MASK_WORDS, m.tiles.maskWords());
   m.venue.bind();
   for (const GpuVenue::Draw& d : m.venue.draws()) {
     const GpuVenue::GpuMaterial& mat = m.venue.materials()[static_cast<size_t>(d.material)];
-    glProgramUniform4fv(prog, 4, 1, glm::value_ptr(mat.baseColor));
-    glProgramUniform3fv(prog, 5, 1, glm::value_ptr(mat.emissive));
-    glProgramUniform1i(prog, 6, mat.baseColorTexture >= 0);
-    glProgramUniform1i(prog, 7, mat.emissiveTexture >= 0);
-    if (mat.baseColorTexture >= 0) glBindTextureUnit(kBaseTexUnit, m.venue.texture(mat.baseColorTexture).id());
-    if (mat.emissiveTexture >= 0) glBindTextureUnit(kEmissiveTexUnit, m.venue.texture(mat.emissiveTexture).id());
+    glProgramUniform4fv(prog, HAZE_LOC_SURFACE_BASE_COLOR, 1, glm::value_ptr(mat.baseColor));
+    glProgramUniform3fv(prog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(mat.emissive));
+    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, mat.baseColorTexture >= 0);
+    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, mat.emissiveTexture >= 0);
+    if (mat.baseColorTexture >= 0)
+      glBindTextureUnit(HAZE_UNIT_BASE_TEXTURE, m.venue.texture(mat.baseColorTexture).id());
+    if (mat.emissiveTexture >= 0)
+      glBindTextureUnit(HAZE_UNIT_EMISSIVE_TEXTURE, m.venue.texture(mat.emissiveTexture).id());
     m.venue.draw(d);
   }
   glDepthMask(GL_TRUE);
@@ -225,17 +241,17 @@ void Renderer::drawDisplay(const DisplaySettings& display, unsigned int framebuf
   const float bloom = std::clamp(display.bloom, 0.0f, 1.0f);
   const GLuint prog = bloom > 0.0f ? m.bloomPostProgram.id() : m.postProgram.id();
   glUseProgram(prog);
-  glProgramUniform1f(prog, 0, std::exp2(display.exposureEv) / DisplaySettings::kKeyNits);
+  glProgramUniform1f(prog, HAZE_LOC_POST_EXPOSURE, std::exp2(display.exposureEv) / DisplaySettings::kKeyNits);
   if (bloom > 0.0f) {
-    glProgramUniform1f(prog, 1, bloom);
+    glProgramUniform1f(prog, HAZE_LOC_POST_BLOOM, bloom);
     glGenerateTextureMipmap(m.radiance.id());
   }
-  glBindTextureUnit(0, m.radiance.id());
-  glBindTextureUnit(1, m.radiance.id());
-  glBindSampler(1, m.mipSampler.id());
+  glBindTextureUnit(HAZE_UNIT_RADIANCE, m.radiance.id());
+  glBindTextureUnit(HAZE_UNIT_RADIANCE_MIPS, m.radiance.id());
+  glBindSampler(HAZE_UNIT_RADIANCE_MIPS, m.mipSampler.id());
   glBindVertexArray(m.emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindSampler(1, 0);
+  glBindSampler(HAZE_UNIT_RADIANCE_MIPS, 0);
 }
 
 std::vector<unsigned char> Renderer::readDisplay(const DisplaySettings& display) {

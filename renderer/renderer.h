@@ -54,6 +54,10 @@ class Renderer {
   static Result<std::unique_ptr<Renderer>> create(const Venue& venue, const RenderSettings& settings);
   ~Renderer();
 
+  // A new image size (a resized viewport): only the size-dependent targets are made again; the
+  // programs, shadow maps and light maps are kept. The last render's image is lost.
+  Status resize(int width, int height);
+
   // With accumulate, the beams' scattering of earlier renders is kept and one more jittered
   // set of frames is added (progressive refinement; the caller promises the frame is unchanged).
   void render(const FrameState& frame, bool accumulate = false);

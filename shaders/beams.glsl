@@ -1,20 +1,14 @@
 // Beams as every lighting shader sees them: the storage buffer written by
-// renderer/beam_resources.cpp (struct GpuBeam), the light-map array (I * gobo * gate over the
-// (u, v) plane of physics.md) and the shadow-map array (depth from each lens).
+// renderer/beam_resources.cpp, the light-map array (I * gobo * gate over the
+// (u, v) plane of physics.md) and the shadow-map array (depth from each lens). struct Beam is
+// declared in interface.h, shared with the C++ that fills the buffer.
+#include "interface.h"
+
 const float PI = 3.14159265358979323846;
 
-struct Beam {
-  vec4 lensPos;   // xyz lens position, w = cos(cutoff half-angle)
-  vec4 xb;        // xyz reference axis, w = 1 / (tan(F/2) * light-map extent)
-  vec4 yb;        // xyz, w = light-map layer
-  vec4 zb;        // xyz beam axis, w = shadow-map layer
-  vec4 color;     // rgb = dimmer * colour filter, w = tan(cutoff)
-  mat4 shadowViewProj;
-};
-
-layout(std430, binding = 0) readonly buffer Beams { Beam beams[]; };
-layout(binding = 1) uniform sampler2DArray uLightMaps;
-layout(binding = 2) uniform sampler2DArrayShadow uShadowMaps;
+layout(std430, binding = HAZE_SSBO_BEAMS) readonly buffer Beams { Beam beams[]; };
+layout(binding = HAZE_UNIT_LIGHT_MAPS) uniform sampler2DArray uLightMaps;
+layout(binding = HAZE_UNIT_SHADOW_MAPS) uniform sampler2DArrayShadow uShadowMaps;
 
 // I_eff (cd per channel) towards world point x, without visibility (physics.md); wl is the
 // unit direction the light travels, r the distance from the lens.

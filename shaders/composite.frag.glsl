@@ -4,12 +4,12 @@
 #include "camera.glsl"
 
 in vec2 vUv;
-layout(binding = 6) uniform sampler2D uScatter;       // accumulated in-scattering
-layout(binding = 7) uniform sampler2D uScatterDepth;  // view depth of each scattering texel
-layout(location = 0) uniform float uScale;            // 1 / accumulated frames
-layout(location = 1) uniform int uUpsample;           // 0: same resolution
+layout(binding = HAZE_UNIT_SCATTER) uniform sampler2D uScatter;             // accumulated in-scattering
+layout(binding = HAZE_UNIT_SCATTER_DEPTH) uniform sampler2D uScatterDepth;  // view depth of each scattering texel
+layout(location = HAZE_LOC_COMPOSITE_SCALE) uniform float uScale;           // 1 / accumulated frames
+layout(location = HAZE_LOC_COMPOSITE_UPSAMPLE) uniform int uUpsample;       // 0: same resolution
 
-layout(location = 0) out vec4 outAdd;
+layout(location = HAZE_FRAG_OUT) out vec4 outAdd;
 
 void main() {
   if (uUpsample == 0) {

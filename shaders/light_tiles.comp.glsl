@@ -1,4 +1,4 @@
-// Tiled light culling (as in Forward+ renderers): for each 16x16-pixel tile of the screen, a bit
+// Tiled light culling (as in Forward+ renderers): for each 16x16-pixel (HAZE_TILE_PX) tile of the screen, a bit
 // mask of the beams whose light cone can reach a surface seen in that tile, from the tile's depth
 // bounds in the depth pre-pass. The surface pass then loops over those beams only: a fragment
 // shader on a CPU rasteriser (llvmpipe) pays for every iteration of its light loop, however
@@ -8,12 +8,12 @@
 
 // One invocation per tile (no barriers or shared memory: on a CPU rasteriser those cost far
 // more than reading the tile's 256 depths in a loop).
-layout(local_size_x = 8, local_size_y = 1) in;
-layout(std430, binding = 3) writeonly buffer TileMasks { uint tileMasks[]; };
-layout(location = 0) uniform ivec2 uTargetSize;
-layout(location = 1) uniform int uBeamCount;
-layout(location = 2) uniform int uMaskWords;
-layout(location = 3) uniform ivec2 uTiles;  // columns, rows
+layout(local_size_x = HAZE_TILE_GROUP_X, local_size_y = 1) in;
+layout(std430, binding = HAZE_SSBO_TILE_MASKS) writeonly buffer TileMasks { uint tileMasks[]; };
+layout(location = HAZE_LOC_TILES_TARGET_SIZE) uniform ivec2 uTargetSize;
+layout(location = HAZE_LOC_TILES_BEAM_COUNT) uniform int uBeamCount;
+layout(location = HAZE_LOC_TILES_MASK_WORDS) uniform int uMaskWords;
+layout(location = HAZE_LOC_TILES_GRID) uniform ivec2 uTiles;  // columns, rows
 
 float viewDepth(float d) {
   float n = uNearFar.x, f = uNearFar.y;
@@ -33,7 +33,7 @@ bool sphereMeetsCone(vec3 centre, float radius, Beam b) {
 void main() {
   ivec2 tileXY = ivec2(gl_GlobalInvocationID.xy);
   if (tileXY.x >= uTiles.x || tileXY.y >= uTiles.y) return;
-  ivec2 p0 = tileXY * 16, p1 = min(p0 + 16, uTargetSize);
+  ivec2 p0 = tileXY * HAZE_TILE_PX, p1 = min(p0 + HAZE_TILE_PX, uTargetSize);
   float dMin = 1.0, dMax = 0.0;
   for (int y = p0.y; y < p1.y; ++y)
     for (int x = p0.x; x < p1.x; ++x) {

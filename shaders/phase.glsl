@@ -1,11 +1,13 @@
 // Phase functions of physics.md, normalised over the sphere; cosA = dot(w_in, w_out).
-layout(location = 25) uniform int uPhase;   // 0 hazy, 1 isotropic, 2 Henyey-Greenstein
-layout(location = 26) uniform float uG;
+#include "interface.h"
+
+layout(location = HAZE_LOC_PHASE) uniform int uPhase;  // HAZE_PHASE_*
+layout(location = HAZE_LOC_PHASE_G) uniform float uG;
 
 float phaseFunction(float cosA) {
   const float PI_ = 3.14159265358979323846;
-  if (uPhase == 1) return 1.0 / (4.0 * PI_);
-  if (uPhase == 2) {
+  if (uPhase == HAZE_PHASE_ISOTROPIC) return 1.0 / (4.0 * PI_);
+  if (uPhase == HAZE_PHASE_HENYEY_GREENSTEIN) {
     float d = 1.0 + uG * uG - 2.0 * uG * cosA;
     return (1.0 - uG * uG) / (4.0 * PI_ * d * sqrt(d));
   }

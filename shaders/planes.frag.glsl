@@ -13,7 +13,7 @@ in vec3 vScatter;
 in float vDepth;
 #endif
 
-layout(location = 0) out vec4 outScatter;
+layout(location = HAZE_FRAG_OUT) out vec4 outScatter;
 
 // Interleaved gradient noise (Jimenez 2014): a cheap per-pixel offset with blue-ish spectrum.
 float ign(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }

@@ -2,8 +2,12 @@
 // zNear + (k + jitter) * dz of one beam, drawn only over the beam's screen footprint.
 // LATTICE: the paper's own form: the plane is a grid of uLattice cells whose corners (the
 // lattice points) evaluate the in-scattering, and the rasteriser interpolates between them.
-layout(location = 0) uniform vec4 uRectNdc;      // footprint's bounding rectangle: x0, y0, x1, y1 in NDC
-layout(location = 30) uniform vec2 uPolygonNdc[24];  // footprint, a convex polygon (triangle fan)
+#include "interface.h"
+
+// The footprint's bounding rectangle (x0, y0, x1, y1 in NDC), and the footprint itself, a convex
+// polygon drawn as a triangle fan.
+layout(location = HAZE_LOC_PLANES_RECT_NDC) uniform vec4 uRectNdc;
+layout(location = HAZE_LOC_PLANES_POLYGON_NDC) uniform vec2 uPolygonNdc[HAZE_FOOTPRINT_MAX_VERTICES];
 flat out int vPlane;
 
 #ifdef LATTICE

@@ -4,12 +4,14 @@
 // of each pixel's light is spread over a wide, heavy-tailed kernel (the mean of the radiance's
 // mip levels 1 to 7, each smoothed by a tent), so the light is moved, not added. Display only:
 // radiometric output never has it.
+#include "interface.h"
+
 in vec2 vUv;
-layout(binding = 0) uniform sampler2D uRadiance;
-layout(binding = 1) uniform sampler2D uRadianceMips;  // the same image, trilinear sampler
-layout(location = 0) uniform float uExposure;   // multiplies cd/m^2 before the curve
-layout(location = 1) uniform float uBloom;      // fraction of the light spread, 0 = off
-layout(location = 0) out vec4 outColor;
+layout(binding = HAZE_UNIT_RADIANCE) uniform sampler2D uRadiance;
+layout(binding = HAZE_UNIT_RADIANCE_MIPS) uniform sampler2D uRadianceMips;  // the same image, trilinear sampler
+layout(location = HAZE_LOC_POST_EXPOSURE) uniform float uExposure;  // multiplies cd/m^2 before the curve
+layout(location = HAZE_LOC_POST_BLOOM) uniform float uBloom;        // fraction of the light spread, 0 = off
+layout(location = HAZE_FRAG_OUT) out vec4 outColor;
 
 vec3 aces(vec3 x) {
   return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);

@@ -3,17 +3,18 @@
 #include "beams.glsl"
 #include "camera.glsl"
 #include "phase.glsl"
+#include "interface.h"
 
-layout(location = 1) uniform vec2 uDepthRange;   // zNear, dz
-layout(location = 2) uniform int uBeam;
-layout(location = 3) uniform float uSigmaS;
-layout(location = 4) uniform float uSigmaT;
-layout(location = 5) uniform vec2 uTargetSize;   // scattering buffer size in pixels
-layout(location = 6) uniform float uFrameJitter; // in [0, 1), changes per accumulated frame
-layout(location = 7) uniform int uJitter;        // 0: plane centres (no jitter)
-layout(location = 8) uniform int uPlanes;
-layout(location = 9) uniform int uMinSamples;    // per ray chord through the cone
-layout(location = 10) uniform ivec2 uLattice;    // LATTICE: lattice cells across the footprint
+layout(location = HAZE_LOC_SCATTER_DEPTH_RANGE) uniform vec2 uDepthRange;    // zNear, dz
+layout(location = HAZE_LOC_SCATTER_BEAM) uniform int uBeam;
+layout(location = HAZE_LOC_SCATTER_SIGMA_S) uniform float uSigmaS;
+layout(location = HAZE_LOC_SCATTER_SIGMA_T) uniform float uSigmaT;
+layout(location = HAZE_LOC_SCATTER_TARGET_SIZE) uniform vec2 uTargetSize;    // scattering buffer size in pixels
+layout(location = HAZE_LOC_SCATTER_FRAME_JITTER) uniform float uFrameJitter; // in [0, 1), per accumulated frame
+layout(location = HAZE_LOC_SCATTER_JITTER) uniform int uJitter;              // 0: plane centres (no jitter)
+layout(location = HAZE_LOC_SCATTER_PLANES) uniform int uPlanes;
+layout(location = HAZE_LOC_SCATTER_MIN_SAMPLES) uniform int uMinSamples;     // per ray chord through the cone
+layout(location = HAZE_LOC_SCATTER_LATTICE) uniform ivec2 uLattice;          // LATTICE: cells across the footprint
 
 vec3 scatterSample(Beam b, vec3 v, float len, float z) {
   vec3 x = uEye + z * v;

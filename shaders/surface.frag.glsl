@@ -6,21 +6,21 @@ in vec3 vPosition;
 in vec3 vNormal;
 in vec2 vUv;
 
-layout(location = 1) uniform vec3 uEye;
-layout(location = 2) uniform float uSigmaT;
-layout(location = 3) uniform vec3 uAmbient;
-layout(location = 4) uniform vec4 uBaseColor;
-layout(location = 5) uniform vec3 uEmissive;
-layout(location = 6) uniform int uHasBaseTexture;
-layout(location = 7) uniform int uHasEmissiveTexture;
-layout(location = 8) uniform int uBeamCount;
-layout(location = 9) uniform int uTileColumns;  // 0: no tile masks, every beam is tried
-layout(location = 10) uniform int uMaskWords;   // 32-bit words per tile (shaders/light_tiles.comp.glsl)
-layout(std430, binding = 3) readonly buffer TileMasks { uint tileMasks[]; };
-layout(binding = 3) uniform sampler2D uBaseTexture;
-layout(binding = 4) uniform sampler2D uEmissiveTexture;
+layout(location = HAZE_LOC_SURFACE_EYE) uniform vec3 uEye;
+layout(location = HAZE_LOC_SURFACE_SIGMA_T) uniform float uSigmaT;
+layout(location = HAZE_LOC_SURFACE_AMBIENT) uniform vec3 uAmbient;
+layout(location = HAZE_LOC_SURFACE_BASE_COLOR) uniform vec4 uBaseColor;
+layout(location = HAZE_LOC_SURFACE_EMISSIVE) uniform vec3 uEmissive;
+layout(location = HAZE_LOC_SURFACE_HAS_BASE_TEXTURE) uniform int uHasBaseTexture;
+layout(location = HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE) uniform int uHasEmissiveTexture;
+layout(location = HAZE_LOC_SURFACE_BEAM_COUNT) uniform int uBeamCount;
+layout(location = HAZE_LOC_SURFACE_TILE_COLUMNS) uniform int uTileColumns;  // 0: no tile masks, every beam is tried
+layout(location = HAZE_LOC_SURFACE_MASK_WORDS) uniform int uMaskWords;      // 32-bit words per tile
+layout(std430, binding = HAZE_SSBO_TILE_MASKS) readonly buffer TileMasks { uint tileMasks[]; };
+layout(binding = HAZE_UNIT_BASE_TEXTURE) uniform sampler2D uBaseTexture;
+layout(binding = HAZE_UNIT_EMISSIVE_TEXTURE) uniform sampler2D uEmissiveTexture;
 
-layout(location = 0) out vec4 outRadiance;
+layout(location = HAZE_FRAG_OUT) out vec4 outRadiance;
 
 // Irradiance from one beam at this surface point (facing n): I_eff V cos exp(-sigma_t r) / r^2.
 vec3 beamIrradiance(Beam b, vec3 n) {
@@ -51,7 +51,7 @@ void main() {
   if (uTileColumns == 0) {
     for (int i = 0; i < uBeamCount; ++i) irradiance += beamIrradiance(beams[i], n);
   } else {
-    ivec2 tile = ivec2(gl_FragCoord.xy) / 16;
+    ivec2 tile = ivec2(gl_FragCoord.xy) / HAZE_TILE_PX;
     int base = (tile.y * uTileColumns + tile.x) * uMaskWords;
     for (int w = 0; w < uMaskWords; ++w) {
       for (uint bits = tileMasks[base + w]; bits != 0u; bits &= bits - 1u)

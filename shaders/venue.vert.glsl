@@ -1,8 +1,10 @@
 // Venue vertices are already in world space (renderer/gpu_venue.cpp): one view-projection.
-layout(location = 0) in vec3 aPosition;
-layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec2 aUv;
-layout(location = 0) uniform mat4 uViewProj;
+#include "interface.h"
+
+layout(location = HAZE_ATTR_POSITION) in vec3 aPosition;
+layout(location = HAZE_ATTR_NORMAL) in vec3 aNormal;
+layout(location = HAZE_ATTR_UV) in vec2 aUv;
+layout(location = HAZE_LOC_VIEW_PROJ) uniform mat4 uViewProj;
 // The depth pre-pass and the lit pass must produce bit-identical depths (GL_EQUAL test).
 invariant gl_Position;
 

@@ -193,7 +193,17 @@ struct ViewportRenderers {
   const ShowDocument* doc = nullptr;
 
   Status fit(Gui& gui, int vw, int vh) {
-    if (still && vw == width && vh == height && gui.quality == quality && doc == gui.doc.get()) return Ok{};
+    const bool sameRenderers = still && gui.quality == quality && doc == gui.doc.get();
+    if (sameRenderers && vw == width && vh == height) return Ok{};
+    if (sameRenderers) {
+      // A resized viewport remakes only the renderers' targets; their programs are kept.
+      if (Status d = draft->resize(vw, vh); !d) return d;
+      if (Status s = still->resize(vw, vh); !s) return s;
+      width = vw;
+      height = vh;
+      gui.stillFrames = 0;
+      return Ok{};
+    }
     // A new document may have a new venue: the renderers are made for one venue.
     auto d = Renderer::create(gui.doc->venue(), renderSettingsFor(Quality::Draft, vw, vh));
     if (!d) return d.error();

@@ -1,72 +1,82 @@
 #include "renderer/gl/program.h"
 
-#include <sstream>
+#include <atomic>
+#include <cstdio>
+#include <mutex>
+#include <set>
 
 #include "shaders/embedded.h"
 
 namespace haze::gl {
 namespace {
 
-// Expands #include "name" lines (one level deep is all haze's shaders use; guarded to 8).
-Result<std::string> expand(const std::string& name, int depth) {
-  const char* src = embeddedShader(name.c_str());
-  if (!src) return Error{"shaders/" + name, "", "no such embedded shader (is it in shaders/?)"};
-  if (depth > 8) return Error{"shaders/" + name, "", "#include nested deeper than 8"};
-  std::istringstream in(src);
-  std::string line, out;
-  int lineNo = 0;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    if (line.rfind("#include", 0) == 0) {
-      const auto a = line.find('"'), b = line.rfind('"');
-      if (a == std::string::npos || b <= a)
-        return Error{"shaders/" + name, "line " + std::to_string(lineNo), "expected #include \"file.glsl\""};
-      auto inc = expand(line.substr(a + 1, b - a - 1), depth + 1);
-      if (!inc) return inc.error();
-      out += *inc;
-    } else {
-      out += line;
-      out += '\n';
-    }
-  }
-  return out;
+std::atomic<uint64_t> g_builds{0};
+
+std::string infoLog(GLuint object, bool program) {
+  GLint len = 0;
+  if (program) glGetProgramiv(object, GL_INFO_LOG_LENGTH, &len);
+  else glGetShaderiv(object, GL_INFO_LOG_LENGTH, &len);
+  if (len <= 1) return "";
+  std::string log(static_cast<size_t>(len), '\0');
+  if (program) glGetProgramInfoLog(object, len, nullptr, log.data());
+  else glGetShaderInfoLog(object, len, nullptr, log.data());
+  while (!log.empty() && (log.back() == '\0' || log.back() == '\n' || log.back() == ' ')) log.pop_back();
+  return log;
 }
 
-Result<GLuint> compile(GLenum stage, const std::string& file, const ProgramDesc& desc) {
-  auto body = expand(file, 0);
-  if (!body) return body.error();
-  std::string src = "#version 450 core\n";
-  for (const std::string& d : desc.defines) src += "#define " + d + "\n";
-  src += "#line 1\n" + *body;
+// A program whose build succeeds with a log is reported once per process, however many
+// renderers build it.
+void reportWarnings(const std::string& key, const std::string& heading, const std::string& log) {
+  static std::mutex mutex;
+  static std::set<std::string> reported;
+  std::lock_guard lock(mutex);
+  if (!reported.insert(key).second) return;
+  std::fprintf(stderr, "%s\n%s\n", heading.c_str(), log.c_str());
+}
+
+std::string variantKey(const ProgramDesc& desc) {
+  std::string key = desc.label + "|" + desc.vertex + "|" + desc.fragment + "|" + desc.compute;
+  for (const std::string& d : desc.defines) key += "|" + d;
+  return key;
+}
+
+Result<GLuint> compile(GLenum stage, const std::string& file, const ProgramDesc& desc, const ShaderLookup& lookup) {
+  auto src = assembleShader(file, desc.defines, lookup);
+  if (!src) return src.error();
   const GLuint shader = glCreateShader(stage);
-  const char* text = src.c_str();
+  const char* text = src->text.c_str();
   glShaderSource(shader, 1, &text, nullptr);
   glCompileShader(shader);
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  const std::string path = "shaders/" + file;
+  const std::string log = rewriteInfoLog(infoLog(shader, false), src->files, path);
   if (!ok) {
-    GLint len = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &len);
-    std::string log(static_cast<size_t>(len > 0 ? len : 1), '\0');
-    glGetShaderInfoLog(shader, len, nullptr, log.data());
     glDeleteShader(shader);
-    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
-    return Error{"shaders/" + file, desc.label, "compile failed: " + log};
+    return Error{path, desc.label, "compile failed:\n" + log};
   }
+  if (!log.empty()) reportWarnings(variantKey(desc) + "|" + file, path + " (" + desc.label + "): compiled with warnings:", log);
   return shader;
 }
 
 }  // namespace
 
+uint64_t programBuildCount() { return g_builds; }
+
 Result<Program> buildProgram(const ProgramDesc& desc) {
+  return buildProgram(desc, [](std::string_view name) { return embeddedShader(std::string(name).c_str()); });
+}
+
+Result<Program> buildProgram(const ProgramDesc& desc, const ShaderLookup& lookup) {
+  ++g_builds;
   Program program(desc.label);
   std::vector<GLuint> shaders;
   const std::string& first = desc.compute.empty() ? desc.vertex : desc.compute;
-  auto vs = compile(desc.compute.empty() ? GL_VERTEX_SHADER : GL_COMPUTE_SHADER, first, desc);
+  auto vs = compile(desc.compute.empty() ? GL_VERTEX_SHADER : GL_COMPUTE_SHADER, first, desc, lookup);
   if (!vs) return vs.error();
   shaders.push_back(*vs);
   if (desc.compute.empty() && !desc.fragment.empty()) {
-    auto fs = compile(GL_FRAGMENT_SHADER, desc.fragment, desc);
+    auto fs = compile(GL_FRAGMENT_SHADER, desc.fragment, desc, lookup);
     if (!fs) {
       glDeleteShader(*vs);
       return fs.error();
@@ -81,13 +91,9 @@ Result<Program> buildProgram(const ProgramDesc& desc) {
   }
   GLint ok = 0;
   glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-  if (!ok) {
-    GLint len = 0;
-    glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &len);
-    std::string log(static_cast<size_t>(len > 0 ? len : 1), '\0');
-    glGetProgramInfoLog(program.id(), len, nullptr, log.data());
-    return Error{"shaders/" + first, desc.label, "link failed: " + log};
-  }
+  const std::string log = infoLog(program.id(), true);
+  if (!ok) return Error{"shaders/" + first, desc.label, "link failed:\n" + log};
+  if (!log.empty()) reportWarnings(variantKey(desc), "program " + desc.label + " (shaders/" + first + "): linked with warnings:", log);
   return program;
 }
 

@@ -1,13 +1,16 @@
 // Building GLSL programs from the embedded shaders/ sources. Variants come from #defines
 // injected after #version (never from copies of files); `#include "x.glsl"` pulls in another
-// embedded file. Compile and link logs name the program, the stage and the file.
+// embedded file (renderer/gl/shader_source.h). Compile and link logs name the program and, per
+// message, the file and line it is about; warnings of programs that build are printed too.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "fixtures/core/result.h"
 #include "renderer/gl/objects.h"
+#include "renderer/gl/shader_source.h"
 
 namespace haze::gl {
 
@@ -19,6 +22,13 @@ struct ProgramDesc {
   std::vector<std::string> defines;   // "SHADOWS", "LATTICE 1"...
 };
 
+// From the shaders embedded in the binary.
 Result<Program> buildProgram(const ProgramDesc& desc);
+// From other sources (tests): files are looked up by name through `lookup`.
+Result<Program> buildProgram(const ProgramDesc& desc, const ShaderLookup& lookup);
+
+// Programs built (or attempted) so far in this process: compiling is the costly part of
+// making a renderer, so tests check that what should reuse programs does.
+uint64_t programBuildCount();
 
 }  // namespace haze::gl

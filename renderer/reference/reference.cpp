@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include "renderer/reference/cone.h"
+#include "renderer/scene/camera_basis.h"
 #include "renderer/scene/physics.h"
 
 namespace haze {
@@ -222,21 +223,10 @@ PixelRadiance radiance(const Bvh& bvh, const FrameState& frame,
 
 glm::vec3 cameraRayDirection(const CameraState& camera, int width, int height, float pixelX,
                              float pixelY) {
-  glm::vec3 forward = camera.target - camera.position;
-  forward = glm::length(forward) > 0.0f ? glm::normalize(forward) : glm::vec3(0.0f, 0.0f, -1.0f);
-  glm::vec3 right = glm::cross(forward, camera.up);
-  if (!(glm::length(right) > 1e-6f)) {
-    // up parallel to the view: any perpendicular will do, pick one deterministically.
-    right = glm::cross(forward, std::fabs(forward.y) < 0.9f ? glm::vec3(0, 1, 0)
-                                                            : glm::vec3(1, 0, 0));
-  }
-  right = glm::normalize(right);
-  const glm::vec3 up = glm::cross(right, forward);
-  const float tanHalf = std::tan(0.5f * camera.fovYDeg * kPi / 180.0f);
-  const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const float sx = (2.0f * pixelX / static_cast<float>(width) - 1.0f) * tanHalf * aspect;
-  const float sy = (1.0f - 2.0f * pixelY / static_cast<float>(height)) * tanHalf;
-  return glm::normalize(forward + sx * right + sy * up);
+  const CameraBasis b = cameraBasis(camera, static_cast<float>(width) / static_cast<float>(height));
+  const float sx = (2.0f * pixelX / static_cast<float>(width) - 1.0f) * b.tanX;
+  const float sy = (1.0f - 2.0f * pixelY / static_cast<float>(height)) * b.tanY;
+  return glm::normalize(b.forward + sx * b.right + sy * b.up);
 }
 
 PixelRadiance radianceAlongRay(const Bvh& bvh, const FrameState& frame, const glm::vec3& origin,

@@ -10,6 +10,7 @@
 
 #include "fixtures/beam_optics.h"
 #include "fixtures/pose.h"
+#include "shaders/interface.h"
 
 namespace haze {
 
@@ -23,6 +24,10 @@ struct CameraState {
 };
 
 enum class Phase { Hazy, Isotropic, HenyeyGreenstein };
+// The renderer passes a Phase to shaders/phase.glsl as its integer value.
+static_assert(static_cast<int>(Phase::Hazy) == HAZE_PHASE_HAZY);
+static_assert(static_cast<int>(Phase::Isotropic) == HAZE_PHASE_ISOTROPIC);
+static_assert(static_cast<int>(Phase::HenyeyGreenstein) == HAZE_PHASE_HENYEY_GREENSTEIN);
 
 struct MediumState {
   float scattering = 0.0f;  // sigma_s [1/m]

@@ -1,5 +1,5 @@
-// Picking (see picking.h): the camera maths mirror renderer.cpp's lookAt/perspective so that a
-// click lands where the pixel was drawn.
+// Picking (see picking.h): the camera basis is the renderer's (renderer/scene/camera_basis.h),
+// so that a click lands where the pixel was drawn.
 #include "shows/edit/picking.h"
 
 #include <algorithm>
@@ -11,19 +11,17 @@
 #include <glm/trigonometric.hpp>
 
 #include "fixtures/pose.h"
+#include "renderer/scene/camera_basis.h"
 
 namespace haze {
 
 ViewCamera::ViewCamera(const CameraState& camera, glm::vec2 viewportPx) : camera_(camera), viewportPx_(viewportPx) {
   viewportPx_ = glm::max(viewportPx_, glm::vec2(1.0f));
-  glm::vec3 f = camera.target - camera.position;
-  if (glm::length(f) < 1e-9f) f = {0.0f, 0.0f, -1.0f};
-  forward_ = glm::normalize(f);
-  glm::vec3 r = glm::cross(forward_, camera.up);
-  if (glm::length(r) < 1e-9f) r = glm::cross(forward_, glm::vec3(0.0f, 0.0f, 1.0f));
-  right_ = glm::normalize(r);
-  up_ = glm::cross(right_, forward_);
-  tanHalfFovY_ = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+  const CameraBasis b = cameraBasis(camera, viewportPx_.x / viewportPx_.y);
+  forward_ = b.forward;
+  right_ = b.right;
+  up_ = b.up;
+  tanHalfFovY_ = b.tanY;
 }
 
 Ray ViewCamera::ray(glm::vec2 pixel) const {

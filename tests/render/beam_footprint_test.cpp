@@ -9,6 +9,7 @@
 
 #include "render_test_util.h"
 #include "renderer/beam_footprint.h"
+#include "renderer/scene/camera_basis.h"
 
 namespace haze::test {
 namespace {
@@ -40,10 +41,9 @@ TEST(BeamFootprint, HoldsEveryVisiblePointOfTheCone) {
     const BeamFootprint fp = beamFootprint(beam, cam, aspect, length);
     const float cutoff = beam.optics.cutoffHalfAngleRad();
 
-    const glm::vec3 f = glm::normalize(cam.target - cam.position);
-    const glm::vec3 r = glm::normalize(glm::cross(f, cam.up));
-    const glm::vec3 up = glm::cross(r, f);
-    const float tanY = std::tan(glm::radians(cam.fovYDeg) * 0.5f), tanX = tanY * aspect;
+    const CameraBasis basis = cameraBasis(cam, aspect);
+    const glm::vec3 f = basis.forward, r = basis.right, up = basis.up;
+    const float tanY = basis.tanY, tanX = basis.tanX;
     bool anyVisible = false;
     for (int k = 0; k < 400; ++k) {
       // A point inside the cone, no farther than `length` along the axis.

@@ -1,0 +1,154 @@
+// The one contract between the C++ renderer and the GLSL in shaders/: uniform locations, texture
+// units, storage-buffer bindings, enum values and the storage buffers' structs. This file is
+// read by both compilers (C++ includes it as "shaders/interface.h", GLSL as "interface.h"
+// through renderer/gl/program.cpp's resolver), so a number lives here once and both sides use
+// its name: a binding that changes on one side cannot silently disagree with the other.
+//
+// Only the preprocessor is common to both languages: numbers are #defines (GLSL's layout()
+// takes them), C++-only parts sit in `#ifdef __cplusplus`. Include guards rather than
+// #pragma once, since GLSL has no #pragma once.
+#ifndef HAZE_SHADERS_INTERFACE_H
+#define HAZE_SHADERS_INTERFACE_H
+
+// ---- Vertex inputs (venue.vert.glsl; renderer/gpu_venue.cpp) -------------------------------
+#define HAZE_ATTR_POSITION 0
+#define HAZE_ATTR_NORMAL 1
+#define HAZE_ATTR_UV 2
+
+// Every pass draws into one colour attachment.
+#define HAZE_FRAG_OUT 0
+
+// ---- Texture units ------------------------------------------------------------------------
+// One unit per texture across all passes, so binding one pass's input never replaces another's.
+#define HAZE_UNIT_RADIANCE 0        // post.frag.glsl: the radiometric image, nearest
+#define HAZE_UNIT_LIGHT_MAPS 1      // beams.glsl: I * gobo * gate per beam (array layers)
+#define HAZE_UNIT_SHADOW_MAPS 2     // beams.glsl: depth from each lens (array layers)
+#define HAZE_UNIT_BASE_TEXTURE 3    // surface.frag.glsl
+#define HAZE_UNIT_EMISSIVE_TEXTURE 4
+#define HAZE_UNIT_SCENE_DEPTH 5     // camera.glsl: the full-resolution depth buffer
+#define HAZE_UNIT_SCATTER 6         // composite.frag.glsl: accumulated in-scattering
+#define HAZE_UNIT_SCATTER_DEPTH 7   // composite.frag.glsl: view depth per scattering texel
+#define HAZE_UNIT_RADIANCE_MIPS 8   // post.frag.glsl: the radiance again, trilinear (bloom)
+// No image units are used.
+
+// ---- Shader storage buffer bindings -------------------------------------------------------
+#define HAZE_SSBO_BEAMS 0        // struct Beam[] (below), written by renderer/beam_resources.cpp
+#define HAZE_SSBO_TILE_MASKS 3   // uint[]: the light tiles' beam masks (below)
+
+// ---- Uniform locations --------------------------------------------------------------------
+// Locations are per program: each block names the program(s) or include file that declares
+// them. Blocks that are linked into one program must not overlap (camera.glsl and phase.glsl
+// are included next to every other block, hence their high numbers).
+
+// venue.vert.glsl (shadow maps, depth pre-pass, surfaces)
+#define HAZE_LOC_VIEW_PROJ 0
+
+// surface.frag.glsl (with venue.vert.glsl)
+#define HAZE_LOC_SURFACE_EYE 1
+#define HAZE_LOC_SURFACE_SIGMA_T 2
+#define HAZE_LOC_SURFACE_AMBIENT 3
+#define HAZE_LOC_SURFACE_BASE_COLOR 4
+#define HAZE_LOC_SURFACE_EMISSIVE 5
+#define HAZE_LOC_SURFACE_HAS_BASE_TEXTURE 6
+#define HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE 7
+#define HAZE_LOC_SURFACE_BEAM_COUNT 8
+#define HAZE_LOC_SURFACE_TILE_COLUMNS 9   // 0: no tile masks, every beam is tried
+#define HAZE_LOC_SURFACE_MASK_WORDS 10
+
+// camera.glsl (every full-screen and compute pass)
+#define HAZE_LOC_CAMERA_EYE 20
+#define HAZE_LOC_CAMERA_FORWARD 21
+#define HAZE_LOC_CAMERA_RIGHT_TAN 22
+#define HAZE_LOC_CAMERA_UP_TAN 23
+#define HAZE_LOC_CAMERA_NEAR_FAR 24
+
+// phase.glsl
+#define HAZE_LOC_PHASE 25   // one of HAZE_PHASE_*
+#define HAZE_LOC_PHASE_G 26
+
+// scatter.glsl (the virtual planes program)
+#define HAZE_LOC_SCATTER_DEPTH_RANGE 1
+#define HAZE_LOC_SCATTER_BEAM 2
+#define HAZE_LOC_SCATTER_SIGMA_S 3
+#define HAZE_LOC_SCATTER_SIGMA_T 4
+#define HAZE_LOC_SCATTER_TARGET_SIZE 5
+#define HAZE_LOC_SCATTER_FRAME_JITTER 6
+#define HAZE_LOC_SCATTER_JITTER 7
+#define HAZE_LOC_SCATTER_PLANES 8
+#define HAZE_LOC_SCATTER_MIN_SAMPLES 9
+#define HAZE_LOC_SCATTER_LATTICE 10
+
+// planes.vert.glsl: the footprint polygon takes HAZE_FOOTPRINT_MAX_VERTICES locations
+// from HAZE_LOC_PLANES_POLYGON_NDC on (30 to 53).
+#define HAZE_LOC_PLANES_RECT_NDC 0
+#define HAZE_LOC_PLANES_POLYGON_NDC 30
+#define HAZE_FOOTPRINT_MAX_VERTICES 24
+
+// composite.frag.glsl
+#define HAZE_LOC_COMPOSITE_SCALE 0
+#define HAZE_LOC_COMPOSITE_UPSAMPLE 1
+
+// post.frag.glsl
+#define HAZE_LOC_POST_EXPOSURE 0
+#define HAZE_LOC_POST_BLOOM 1
+
+// light_tiles.comp.glsl
+#define HAZE_LOC_TILES_TARGET_SIZE 0
+#define HAZE_LOC_TILES_BEAM_COUNT 1
+#define HAZE_LOC_TILES_MASK_WORDS 2
+#define HAZE_LOC_TILES_GRID 3   // columns, rows
+
+// ---- Enums --------------------------------------------------------------------------------
+// haze::Phase (renderer/scene/frame_state.h) asserts its values against these.
+#define HAZE_PHASE_HAZY 0
+#define HAZE_PHASE_ISOTROPIC 1
+#define HAZE_PHASE_HENYEY_GREENSTEIN 2
+
+// ---- Light tiles --------------------------------------------------------------------------
+// The screen is cut into HAZE_TILE_PX square tiles, row-major from the bottom left; tile t's
+// mask words are tileMasks[t * maskWords + w], bit k of word w standing for beam 32 w + k.
+#define HAZE_TILE_PX 16
+#define HAZE_TILE_GROUP_X 8   // tiles per compute work group (one invocation per tile)
+
+// ---- struct Beam: one element of the beams storage buffer (std430) --------------------------
+// The same declaration compiles in both languages: C++ sees glm types under GLSL's names.
+#ifdef __cplusplus
+#include <cstddef>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+namespace haze::gpu {
+using vec4 = glm::vec4;
+using mat4 = glm::mat4;
+#endif
+
+struct Beam {
+  vec4 lensPos;   // xyz lens position, w = cos(cutoff half-angle)
+  vec4 xb;        // xyz reference axis, w = 1 / (tan(F/2) * light-map extent)
+  vec4 yb;        // xyz, w = light-map layer
+  vec4 zb;        // xyz beam axis, w = shadow-map layer
+  vec4 color;     // rgb = dimmer * colour filter, w = tan(cutoff)
+  mat4 shadowViewProj;
+};
+
+// The std430 offsets of struct Beam's fields: the C++ compiler lays out glm types by its own
+// rules, so each field is checked against the offset GLSL gives it.
+#define HAZE_BEAM_OFFSET_LENS_POS 0
+#define HAZE_BEAM_OFFSET_XB 16
+#define HAZE_BEAM_OFFSET_YB 32
+#define HAZE_BEAM_OFFSET_ZB 48
+#define HAZE_BEAM_OFFSET_COLOR 64
+#define HAZE_BEAM_OFFSET_SHADOW_VIEW_PROJ 80
+#define HAZE_BEAM_SIZE 144
+
+#ifdef __cplusplus
+static_assert(offsetof(Beam, lensPos) == HAZE_BEAM_OFFSET_LENS_POS);
+static_assert(offsetof(Beam, xb) == HAZE_BEAM_OFFSET_XB);
+static_assert(offsetof(Beam, yb) == HAZE_BEAM_OFFSET_YB);
+static_assert(offsetof(Beam, zb) == HAZE_BEAM_OFFSET_ZB);
+static_assert(offsetof(Beam, color) == HAZE_BEAM_OFFSET_COLOR);
+static_assert(offsetof(Beam, shadowViewProj) == HAZE_BEAM_OFFSET_SHADOW_VIEW_PROJ);
+static_assert(sizeof(Beam) == HAZE_BEAM_SIZE);
+}  // namespace haze::gpu
+#endif
+
+#endif  // HAZE_SHADERS_INTERFACE_H
