@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 
 namespace haze::gl {
 
