@@ -20,6 +20,7 @@
 #include "renderer/context.h"
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
+#include "renderer/scene/image_compare.h"
 
 namespace haze {
 namespace {
@@ -27,22 +28,6 @@ namespace {
 int fail(const std::string& line) {
   std::fprintf(stderr, "haze bench: %s\n", line.c_str());
   return 1;
-}
-
-// physics.md "Accuracy": mean relative error over the values where the reference is above
-// 1 % of its maximum.
-double meanRelativeError(const ImageRGB& gpu, const ImageRGB& ref) {
-  float maxL = 0.0f;
-  for (const glm::vec3& p : ref.pixels) maxL = std::max({maxL, p.r, p.g, p.b});
-  double sum = 0.0;
-  size_t n = 0;
-  for (size_t i = 0; i < ref.pixels.size() && i < gpu.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      if (ref.pixels[i][c] > 0.01f * maxL) {
-        sum += std::abs(gpu.pixels[i][c] - ref.pixels[i][c]) / ref.pixels[i][c];
-        ++n;
-      }
-  return n ? sum / static_cast<double>(n) : 0.0;
 }
 
 // CPU time of the whole process (llvmpipe's render threads included): on a shared, busy machine
@@ -124,8 +109,10 @@ int runStudy(int width, int height) {
       (*r)->render(frame);
       times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count());
     }
-    std::printf("| %s | %d | %.2f %% | %.1f |\n", v.name.c_str(), v.s.planes,
-                100.0 * meanRelativeError((*r)->readRadiance(), ref), median(times));
+    auto c = compareImages((*r)->readRadiance(), ref);
+    if (!c) return fail(v.name + ": " + c.error().str());
+    std::printf("| %s | %d | %.2f %% | %.1f |\n", v.name.c_str(), v.s.planes, 100.0 * c->meanRelError,
+                median(times));
   }
   return 0;
 }
@@ -221,7 +208,9 @@ int runBench(const Args& args) {
     const ImageRGB ref = renderReference(venue, frame, width, height);
     const double refMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     out["reference_ms"] = refMs;
-    out["mean_relative_error"] = meanRelativeError(gpu, ref);
+    auto c = compareImages(gpu, ref);
+    if (!c) return fail("against the reference: " + c.error().str());
+    out["mean_relative_error"] = c->meanRelError;
     out["speedup_vs_reference"] = median(total) > 0 ? refMs / median(total) : 0.0;
   }
   if (json) {

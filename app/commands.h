@@ -14,6 +14,7 @@ int runFixture(const Args& args);       // app/cmd_fixture.cpp   (haze fixture i
 int runState(const Args& args);         // app/cmd_state.cpp     (haze state SHOW --cue N ...)
 int runValidate(const Args& args);      // app/cmd_validate.cpp  (haze validate SHOW)
 int runBench(const Args& args);         // app/cmd_bench.cpp
+int runCompare(const Args& args);       // app/cmd_compare.cpp   (haze compare IMAGE REFERENCE)
 int runLive(const Args& args);          // app/cmd_live.cpp
 int runImportMvr(const Args& args);     // app/cmd_import_mvr.cpp
 int runGui(const Args& args);           // app/gui/ (haze, haze open SHOW)

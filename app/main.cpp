@@ -21,6 +21,7 @@ constexpr const char* kHelp =
     "  haze import-mvr FILE.mvr -o SHOW.haze.json [--force] [--no-venue] [--verbose]\n"
     "  haze fixture info FILE --json        native profile, .ies, .ldt or .gdtf\n"
     "  haze bench [--fixtures N] [--width W --height H] [--quality Q] [--compare-reference] [--study] --json\n"
+    "  haze compare IMAGE.pfm REFERENCE.pfm [--threshold F] [--max-error E] [--json]   accuracy metric\n"
     "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S] [--state-json OUT] [--render OUT.png]\n"
     "Each subcommand takes --help.\n";
 
@@ -52,6 +53,7 @@ int main(int argc, char** argv) {
   if (cmd == "validate") return haze::runValidate(rest);
   if (cmd == "fixture") return haze::runFixture(rest);
   if (cmd == "bench") return haze::runBench(rest);
+  if (cmd == "compare") return haze::runCompare(rest);
   if (cmd == "live") return haze::runLive(rest);
   if (cmd == "import-mvr") return haze::runImportMvr(rest);
   if (cmd == "open") return openGui(rest);

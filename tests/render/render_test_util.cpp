@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -39,32 +40,23 @@ BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldD
   return b;
 }
 
-Comparison compare(const ImageRGB& actual, const ImageRGB& reference, float threshold) {
-  Comparison c;
-  float maxL = 0.0f;
-  for (const glm::vec3& p : reference.pixels) maxL = std::max(maxL, std::max({p.r, p.g, p.b}));
-  double sum = 0.0;
-  for (size_t i = 0; i < reference.pixels.size() && i < actual.pixels.size(); ++i) {
-    for (int ch = 0; ch < 3; ++ch) {
-      const float r = reference.pixels[i][ch];
-      if (r <= threshold * maxL) continue;
-      const double e = std::abs(actual.pixels[i][ch] - r) / r;
-      sum += e;
-      c.maxRelError = std::max(c.maxRelError, e);
-      ++c.pixels;
-    }
-  }
-  c.meanRelError = c.pixels ? sum / static_cast<double>(c.pixels) : 0.0;
-  return c;
-}
-
-void writeDiagnostics(const std::string& name, const ImageRGB& actual, const ImageRGB& reference) {
+std::vector<std::filesystem::path> writeDiagnostics(const std::string& name, const ImageRGB& actual,
+                                                    const ImageRGB& reference) {
+  const std::filesystem::path dir = HAZE_TEST_OUTPUT_DIR;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
   ImageRGB diff = actual;
   for (size_t i = 0; i < diff.pixels.size() && i < reference.pixels.size(); ++i)
     diff.pixels[i] = glm::abs(actual.pixels[i] - reference.pixels[i]);
-  (void)writePfm(actual, name + ".actual.pfm");
-  (void)writePfm(reference, name + ".expected.pfm");
-  (void)writePfm(diff, name + ".diff.pfm");
+  std::vector<std::filesystem::path> written;
+  for (const auto& [suffix, image] : {std::pair{".actual.pfm", &actual}, std::pair{".expected.pfm", &reference},
+                                      std::pair{".diff.pfm", static_cast<const ImageRGB*>(&diff)}}) {
+    const std::filesystem::path file = dir / (name + suffix);
+    const Status st = writePfm(*image, file);
+    if (st.ok()) written.push_back(file);
+    else ADD_FAILURE() << "diagnostic image not written: " << st.error().str();
+  }
+  return written;
 }
 
 }  // namespace haze::test

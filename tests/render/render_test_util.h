@@ -1,10 +1,12 @@
 // Helpers for GL render tests: a debug headless context per test (any GL error fails the test),
-// scenes built in code, and float-image comparisons that write actual/expected/difference PFMs
-// into the build folder when they fail.
+// scenes built in code, and the actual/expected/difference PFMs a failed image comparison leaves
+// in the build folder (the comparison itself is renderer/scene/image_compare.h).
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -43,15 +45,9 @@ void addSphere(Venue& v, glm::vec3 centre, float radiusM, int segments = 32, int
 BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldDeg, float peakCd,
                    glm::vec3 color = glm::vec3(1.0f));
 
-// Mean relative error over pixels where the reference is above threshold * its maximum
-// (physics.md "Accuracy"); also counts those pixels.
-struct Comparison {
-  double meanRelError = 0;
-  double maxRelError = 0;
-  size_t pixels = 0;
-};
-Comparison compare(const ImageRGB& actual, const ImageRGB& reference, float threshold = 0.01f);
-// Writes <name>.actual.pfm, <name>.expected.pfm and <name>.diff.pfm in the working folder.
-void writeDiagnostics(const std::string& name, const ImageRGB& actual, const ImageRGB& reference);
+// Writes <name>.actual.pfm, <name>.expected.pfm and <name>.diff.pfm into HAZE_TEST_OUTPUT_DIR
+// (the build tree's test-output/, never the source tree) and returns the files written.
+std::vector<std::filesystem::path> writeDiagnostics(const std::string& name, const ImageRGB& actual,
+                                                    const ImageRGB& reference);
 
 }  // namespace haze::test

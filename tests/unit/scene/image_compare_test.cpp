@@ -1,0 +1,83 @@
+// image_compare.h, the accuracy metric, on images small enough to work out by hand: identical
+// images, one pixel off, the threshold's per-channel mask, the leak, and the comparisons that
+// must be reported as failures (nothing compared, different sizes).
+#include <gtest/gtest.h>
+
+#include "renderer/scene/image_compare.h"
+
+namespace haze {
+namespace {
+
+ImageRGB filled(int w, int h, glm::vec3 value) {
+  ImageRGB img;
+  img.width = w;
+  img.height = h;
+  img.pixels.assign(static_cast<size_t>(w) * h, value);
+  return img;
+}
+
+TEST(ImageCompare, IdenticalImagesHaveNoError) {
+  const ImageRGB ref = filled(4, 3, glm::vec3(2.0f, 1.0f, 0.5f));
+  auto c = compareImages(ref, ref);
+  ASSERT_TRUE(c.ok()) << c.error().str();
+  EXPECT_EQ(c->meanRelError, 0.0);
+  EXPECT_EQ(c->maxRelError, 0.0);
+  EXPECT_EQ(c->values, 36u);  // every channel of the 12 pixels is above 1 % of 2
+  EXPECT_EQ(c->referenceMax, 2.0f);
+  EXPECT_EQ(c->leak, 0.0);
+}
+
+TEST(ImageCompare, OnePixelTenPercentOffAmongN) {
+  constexpr int kW = 8, kH = 5, kN = kW * kH;
+  const ImageRGB ref = filled(kW, kH, glm::vec3(1.0f));
+  ImageRGB actual = ref;
+  actual.at(3, 2) = glm::vec3(1.1f);
+  auto c = compareImages(actual, ref);
+  ASSERT_TRUE(c.ok()) << c.error().str();
+  // Three values off by 10 % among 3N.
+  EXPECT_NEAR(c->meanRelError, 0.1 / kN, 1e-7);
+  EXPECT_NEAR(c->maxRelError, 0.1, 1e-6);
+  EXPECT_EQ(c->values, 3u * kN);
+  // The relative error is symmetric in sign.
+  actual.at(3, 2) = glm::vec3(0.9f);
+  EXPECT_NEAR(compareImages(actual, ref)->meanRelError, 0.1 / kN, 1e-7);
+}
+
+TEST(ImageCompare, ThresholdMasksEachChannelOnTheReferenceMaximum) {
+  ImageRGB ref = filled(2, 1, glm::vec3(0.0f));
+  ref.at(0, 0) = glm::vec3(100.0f, 0.5f, 0.0f);  // red counts; green is under 1 % of 100
+  ref.at(1, 0) = glm::vec3(0.0f, 0.0f, 2.0f);    // blue counts
+  ImageRGB actual = ref;
+  actual.at(0, 0).r = 110.0f;  // 10 % on a counted value
+  actual.at(0, 0).g = 1.5f;    // off by 1 where the reference is dark: leak, not error
+  auto c = compareImages(actual, ref);
+  ASSERT_TRUE(c.ok()) << c.error().str();
+  EXPECT_EQ(c->values, 2u);
+  EXPECT_NEAR(c->meanRelError, 0.05, 1e-6);
+  EXPECT_EQ(c->referenceMax, 100.0f);
+  // |1.5 - 0.5| over the four dark values, over the maximum 100.
+  EXPECT_NEAR(c->leak, 1.0 / 4.0 / 100.0, 1e-9);
+  // A lower threshold lets the green value in: (0.1 + 2 + 0) / 3.
+  auto low = compareImages(actual, ref, 0.001f);
+  ASSERT_TRUE(low.ok()) << low.error().str();
+  EXPECT_EQ(low->values, 3u);
+  EXPECT_NEAR(low->meanRelError, 2.1 / 3.0, 1e-6);
+}
+
+TEST(ImageCompare, DarkReferenceComparesNothingAndFails) {
+  const ImageRGB dark = filled(4, 4, glm::vec3(0.0f));
+  const ImageRGB lit = filled(4, 4, glm::vec3(1.0f));
+  auto c = compareImages(lit, dark);
+  ASSERT_FALSE(c.ok()) << "a mean over no values must not read as a match";
+  EXPECT_NE(c.error().message.find("nothing was compared"), std::string::npos) << c.error().message;
+}
+
+TEST(ImageCompare, DifferentSizesFail) {
+  auto c = compareImages(filled(4, 3, glm::vec3(1.0f)), filled(3, 4, glm::vec3(1.0f)));
+  ASSERT_FALSE(c.ok());
+  EXPECT_NE(c.error().message.find("4x3"), std::string::npos) << c.error().message;
+  EXPECT_NE(c.error().message.find("3x4"), std::string::npos) << c.error().message;
+}
+
+}  // namespace
+}  // namespace haze
