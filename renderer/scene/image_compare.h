@@ -5,7 +5,7 @@
 
 #include <cstddef>
 
-#include "fixtures/result.h"
+#include "fixtures/core/result.h"
 #include "renderer/scene/image.h"
 
 namespace haze {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "render_test_util.h"
+#include "renderer/scene/image_compare.h"
 #include "renderer/gl/program.h"
 #include "renderer/renderer.h"
 
@@ -47,9 +48,10 @@ TEST_F(RendererResizeTest, ResizingTwiceBuildsNoProgram) {
   const ImageRGB resized = (*r)->readRadiance(), made = (*f)->readRadiance();
   ASSERT_EQ(resized.width, made.width);
   ASSERT_EQ(resized.height, made.height);
-  const Comparison c = compare(resized, made);
-  EXPECT_GT(c.pixels, 100u);
-  EXPECT_LT(c.maxRelError, 1e-5) << "the resized renderer draws what a new one draws";
+  const auto c = compareImages(resized, made);
+  ASSERT_TRUE(c.ok()) << c.error().str();
+  EXPECT_GT(c->values, 100u);
+  EXPECT_LT(c->maxRelError, 1e-5) << "the resized renderer draws what a new one draws";
 }
 
 TEST_F(RendererResizeTest, RejectsSizesCreateRejects) {
