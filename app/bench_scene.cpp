@@ -47,7 +47,7 @@ FrameState benchFrame(int fixtures) {
     const glm::vec3 pos(x, 7.5f, line ? -4.0f : 1.0f);
     const glm::vec3 target(-x * 0.6f, 0.0f, line ? -1.0f : -3.0f);
     const glm::vec3 d = glm::normalize(target - pos);
-    // Pan and tilt that aim the head at the target (physics.md: beam = Ry(pan) Rx(tilt) (0,-1,0)).
+    // Pan and tilt that aim the head at the target (docs/physics.md: beam = Ry(pan) Rx(tilt) (0,-1,0)).
     const float tilt = std::acos(std::clamp(-d.y, -1.0f, 1.0f));
     const float pan = std::atan2(-d.x, -d.z);
     BeamState b;

@@ -1,5 +1,5 @@
 // `haze state SHOW --cue N [--at S] [--list NAME] [--follow] [--json]`: every fixture's attributes
-// S seconds after GO into cue N from the full state of the cue before it (show-format.md). With
+// S seconds after GO into cue N from the full state of the cue before it (docs/show-format.md). With
 // --follow, follows fire as they would on stage (cue N's follow may GO the next cue, and so on).
 // Bad arguments or a broken show give one line on stderr and exit 1 (2 for usage).
 #include <cmath>

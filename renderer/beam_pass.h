@@ -1,4 +1,4 @@
-// In-scattering by virtual planes (haze.md, "Rendering shafts of light"): per beam, planes
+// In-scattering by virtual planes (docs/architecture.md, "Rendering shafts of light"): per beam, planes
 // parallel to the screen at equal view-depth steps over only that beam's depth range and screen
 // footprint; each plane samples the light map, the shadow map, the phase function and both
 // attenuations, and adds into a float scattering buffer (optionally at lower resolution),

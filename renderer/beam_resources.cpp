@@ -84,7 +84,7 @@ float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float ne
   glProgramUniformMatrix4fv(program.id(), HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);  // surfaces are two-sided (physics.md)
+  glDisable(GL_CULL_FACE);  // surfaces are two-sided (docs/physics.md)
   // Slope-scaled offset keeps lit surfaces from shadowing themselves at grazing angles.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, 2.0f);

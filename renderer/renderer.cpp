@@ -143,7 +143,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   const float sigmaT = med.extinction();
   glBindFramebuffer(GL_FRAMEBUFFER, m.sceneFbo.id());
   glViewport(0, 0, w, h);
-  // Where no surface is hit the ray ends at the camera's far distance (physics.md).
+  // Where no surface is hit the ray ends at the camera's far distance (docs/physics.md).
   const glm::vec4 background(med.background * std::exp(-sigmaT * frame.camera.farM), 1.0f);
   glClearNamedFramebufferfv(m.sceneFbo.id(), GL_COLOR, 0, glm::value_ptr(background));
   const float one = 1.0f;

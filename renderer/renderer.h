@@ -1,5 +1,5 @@
 // The GPU renderer: takes a Venue once and a FrameState per frame, draws into a float radiance
-// target (physics.md's L per pixel), and encodes it for display. Passes: shadow maps (cached per
+// target (docs/physics.md's L per pixel), and encodes it for display. Passes: shadow maps (cached per
 // beam), surfaces, volumetric beams, post. Needs a current OpenGL 4.5 context (renderer/context.h).
 #pragma once
 

@@ -1,6 +1,6 @@
 // Beams as every lighting shader sees them: the storage buffer written by
 // renderer/beam_resources.cpp, the light-map array (I * gobo * gate over the
-// (u, v) plane of physics.md) and the shadow-map array (depth from each lens). struct Beam is
+// (u, v) plane of docs/physics.md) and the shadow-map array (depth from each lens). struct Beam is
 // declared in interface.h, shared with the C++ that fills the buffer.
 #include "interface.h"
 
@@ -10,7 +10,7 @@ layout(std430, binding = HAZE_SSBO_BEAMS) readonly buffer Beams { Beam beams[]; 
 layout(binding = HAZE_UNIT_LIGHT_MAPS) uniform sampler2DArray uLightMaps;
 layout(binding = HAZE_UNIT_SHADOW_MAPS) uniform sampler2DArrayShadow uShadowMaps;
 
-// I_eff (cd per channel) towards world point x, without visibility (physics.md); wl is the
+// I_eff (cd per channel) towards world point x, without visibility (docs/physics.md); wl is the
 // unit direction the light travels, r the distance from the lens.
 vec3 beamIntensity(Beam b, vec3 x, out vec3 wl, out float r) {
   vec3 d = x - b.lensPos.xyz;

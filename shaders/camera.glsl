@@ -1,4 +1,4 @@
-// The eye ray of a pixel and the scene distance along it (physics.md, "What a pixel is").
+// The eye ray of a pixel and the scene distance along it (docs/physics.md, "What a pixel is").
 #include "interface.h"
 
 layout(location = HAZE_LOC_CAMERA_EYE) uniform vec3 uEye;

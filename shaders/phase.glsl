@@ -1,4 +1,4 @@
-// Phase functions of physics.md, normalised over the sphere; cosA = dot(w_in, w_out).
+// Phase functions of docs/physics.md, normalised over the sphere; cosA = dot(w_in, w_out).
 #include "interface.h"
 
 layout(location = HAZE_LOC_PHASE) uniform int uPhase;  // HAZE_PHASE_*

@@ -1,4 +1,4 @@
-// Display encoding of the radiometric image (physics.md, "Images"): optional bloom, exposure,
+// Display encoding of the radiometric image (docs/physics.md, "Images"): optional bloom, exposure,
 // then the ACES filmic fit of Narkowicz 2015 as the tone curve, then the sRGB transfer function.
 // Bloom imitates the glare of an eye or a camera lens around bright beams and lamps: a fraction
 // of each pixel's light is spread over a wide, heavy-tailed kernel (the mean of the radiance's

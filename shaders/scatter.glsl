@@ -1,4 +1,4 @@
-// One sample of physics.md's in-scattering integrand for a beam at view depth z on the eye ray
+// One sample of docs/physics.md's in-scattering integrand for a beam at view depth z on the eye ray
 // v (with dot(v, forward) = 1, len = |v|): sigma_s p(a) V(x) I_eff exp(-sigma_t (r + t)) / r^2.
 #include "beams.glsl"
 #include "camera.glsl"

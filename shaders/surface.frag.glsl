@@ -1,4 +1,4 @@
-// Surfaces lit by every beam, per physics.md: two-sided Lambert with I_eff, V, cosine,
+// Surfaces lit by every beam, per docs/physics.md: two-sided Lambert with I_eff, V, cosine,
 // exp(-sigma_t r) / r^2, plus ambient and emission, then attenuated by exp(-sigma_t T) to the eye.
 #include "beams.glsl"
 

@@ -1,5 +1,5 @@
 // Focus to point: the pan and tilt that aim a fixture's beam axis through a point in the world,
-// for clicking a spot on stage in the GUI (physics.md, "Mounting, pan and tilt").
+// for clicking a spot on stage in the GUI (docs/physics.md, "Mounting, pan and tilt").
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// The tracking model of show-format.md as pure functions: tracked states by laying each cue's
+// The tracking model of docs/show-format.md as pure functions: tracked states by laying each cue's
 // values over the state before it, and the crossfade between two states at a moment after GO
 // (delay, then a linear fade of continuous attributes; the gobo switches when the fade starts).
 #include "shows/playback.h"

@@ -1,4 +1,4 @@
-// Cue playback, the tracking model of show-format.md. The pure face: the state of every fixture
+// Cue playback, the tracking model of docs/show-format.md. The pure face: the state of every fixture
 // at a moment after GO. The clock-driven player for the GUI and live playback (GO, BACK, GOTO,
 // follow chains) is shows/cue_player.h and is built from the same pieces.
 #pragma once

@@ -1,4 +1,4 @@
-// Show: the show model of show-format.md (venue, atmosphere, cameras, profiles, fixtures with
+// Show: the show model of docs/show-format.md (venue, atmosphere, cameras, profiles, fixtures with
 // patch, cue lists), loaded from and saved to *.haze.json. No GL.
 #pragma once
 
@@ -88,7 +88,7 @@ struct FileStamp {
   bool operator==(const FileStamp&) const = default;
 };
 
-// The newest show format version this haze reads and writes (show-format.md).
+// The newest show format version this haze reads and writes (docs/show-format.md).
 inline constexpr int kShowFormatVersion = 1;
 
 struct Show {

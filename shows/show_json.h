@@ -26,7 +26,7 @@ struct ShowParse {
 ShowParse parseShowText(std::string_view text, const std::filesystem::path& file);
 // Reads a file (size-limited) into bytes; an Error when it cannot be read.
 Result<std::string> readShowBytes(const std::filesystem::path& file);
-// The text a save writes: the key order of show-format.md, 2-space indent, short number arrays
+// The text a save writes: the key order of docs/show-format.md, 2-space indent, short number arrays
 // on one line, one fixture per block, a final newline.
 std::string showToText(const Show& show);
 // FNV-1a 64 and size of a file's bytes.

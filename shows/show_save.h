@@ -19,7 +19,7 @@ struct SaveOptions {
   bool keepBackup = true;   // keep the version being replaced as backupPathFor(file)
 };
 
-// Writes the show to `file` (show-format.md text). On success show.file and show.stamp describe
+// Writes the show to `file` (docs/show-format.md text). On success show.file and show.stamp describe
 // the new file, so the next save checks against it.
 Status saveShow(Show& show, const std::filesystem::path& file, const SaveOptions& options = {});
 

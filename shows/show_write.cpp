@@ -1,4 +1,4 @@
-// Writing a show as text a person can diff: keys in the order of show-format.md, 2-space indent,
+// Writing a show as text a person can diff: keys in the order of docs/show-format.md, 2-space indent,
 // number arrays ([x, y, z], colours) on one line, floats in their shortest form, whole numbers
 // without ".0", so that loading and saving an unchanged show changes no byte.
 #include <algorithm>

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # Generates the bundled demo show (examples/demo): the theatre venue as glTF 2.0 (.gltf + .bin +
 # a deck texture), the gobo images, the native fixture profiles and demo.haze.json with pan/tilt
-# computed from named targets by physics.md's convention. Standard library only; run by hand
+# computed from named targets by docs/physics.md's convention. Standard library only; run by hand
 # (`python3 tools/make_demo_venue.py`), the output is committed. It re-reads what it wrote and
 # checks it (accessor sizes, bounds, indices, patch overlaps, value ranges) and ray-casts every
 # beam axis of every cue against the venue's triangles, so a wrong aim or a broken file fails here
@@ -651,7 +651,7 @@ def verify_gltf(gltf_path):
 
 
 # --------------------------------------------------------------------------------------------
-# Fixture profiles (show-format.md, native JSON). Parametric photometry: no external data.
+# Fixture profiles (docs/show-format.md, native JSON). Parametric photometry: no external data.
 
 GOBOS = [("Dots", "dots.png", gobo_dots), ("Leaves", "leaves.png", gobo_leaves),
          ("Spokes", "spokes.png", gobo_spokes)]

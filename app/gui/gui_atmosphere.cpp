@@ -1,5 +1,5 @@
 // The atmosphere tab: scattering, absorption, phase function (and g for Henyey-Greenstein),
-// ambient light (physics.md), each a setAtmosphere command (a drag is one undo step); and the
+// ambient light (docs/physics.md), each a setAtmosphere command (a drag is one undo step); and the
 // view's render quality, exposure and bloom, which are not part of the show.
 #include "app/gui/gui.h"
 #include "shows/dmx/udp_receiver.h"

@@ -1,4 +1,4 @@
-// The CPU reference integrator: physics.md's "What a pixel is", computed by brute force with
+// The CPU reference integrator: docs/physics.md's "What a pixel is", computed by brute force with
 // exact shadow rays (against a Bvh of the venue's triangles) and exact I_eff lookups. It is the
 // oracle every fast path of the GPU renderer is measured against; docs/reference.md says how it
 // marches and how converged it is.
@@ -46,7 +46,7 @@ struct PixelRadiance {
 };
 
 // The unit direction of pixel (i, j)'s ray through its centre, j = 0 the top row
-// (physics.md's pinhole camera). Fractional pixel coordinates are allowed: (i, j) = (0, 0) is
+// (docs/physics.md's pinhole camera). Fractional pixel coordinates are allowed: (i, j) = (0, 0) is
 // the top-left corner of the image, (W / 2, H / 2) the centre.
 glm::vec3 cameraRayDirection(const CameraState& camera, int width, int height, float pixelX,
                              float pixelY);
@@ -60,7 +60,7 @@ PixelRadiance radianceAlongRay(const Bvh& bvh, const FrameState& frame, const gl
 PixelRadiance radianceAtPixel(const Bvh& bvh, const FrameState& frame, int width, int height,
                               int i, int j, const ReferenceOptions& options = {});
 
-// The whole image, with L_surf and L_in apart (the accuracy metric of physics.md looks at the
+// The whole image, with L_surf and L_in apart (the accuracy metric of docs/physics.md looks at the
 // pixels where L_in is above 1 % of its maximum).
 struct ReferenceImages {
   ImageRGB total;

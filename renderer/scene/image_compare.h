@@ -11,7 +11,7 @@
 namespace haze {
 
 // Each colour channel of each pixel is a value; a value counts when the reference's is above
-// threshold * the reference's largest value (any channel, any pixel). physics.md "Accuracy"
+// threshold * the reference's largest value (any channel, any pixel). docs/physics.md "Accuracy"
 // masks on the in-scattered radiance L_in instead; this masks on the total L per channel
 // because every number in docs/rendering.md and every test tolerance was measured that way.
 struct ImageComparison {

@@ -1,4 +1,4 @@
-// physics.md's formulas as CPU functions, shared by the reference integrator, tests and the
+// docs/physics.md's formulas as CPU functions, shared by the reference integrator, tests and the
 // frame builder. shaders/physics.glsl holds their GLSL twins; tests/render compares the two.
 #pragma once
 

@@ -21,7 +21,7 @@ namespace haze {
 glm::vec3 mvrPointToHazeM(const glm::dvec3& mvrMm);
 // A rotation (orthonormal, columns = the object's local axes in MVR world) as haze's
 // [rx, ry, rz] in degrees with R = Rz * Ry * Rx, such that the object's local -Z (a GDTF beam)
-// becomes haze's rotated -Y (physics.md: the beam at pan = tilt = 0).
+// becomes haze's rotated -Y (docs/physics.md: the beam at pan = tilt = 0).
 glm::vec3 mvrRotationToHazeDeg(const glm::dmat3& mvrRotation);
 // The 4x4 placement of <Matrix>{u}{v}{w}{o}</Matrix> (u, v, w the local axes as columns, o the
 // origin in mm); an Error message when the text is not 12 finite numbers of sane size.

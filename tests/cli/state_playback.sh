@@ -2,7 +2,7 @@
 # `haze state` through the binary: tracking over 7 cues, delay then fade, fade 0 after a delay,
 # the gobo switch at the start of a fade, a follow chain, BACK-like and GOTO-like jumps are the
 # player's (unit tests); here each expected value follows by hand from
-# tests/data/shows/valid.haze.json and show-format.md. Usage: state_playback.sh HAZE REPO
+# tests/data/shows/valid.haze.json and docs/show-format.md. Usage: state_playback.sh HAZE REPO
 set -u
 haze=$1
 repo=$2

@@ -1,5 +1,5 @@
 // The GPU renderer (virtual planes on llvmpipe) against the CPU reference on radiometric images,
-// over the pixels where L is above 1 % of the image maximum (physics.md, "Accuracy").
+// over the pixels where L is above 1 % of the image maximum (docs/physics.md, "Accuracy").
 // Tolerances: mean relative error at most 3 % at `high` and 8 % at `default` (issue 5). The
 // remaining error is the planes' sampling noise, the light-map and shadow-map resolution, and
 // rasterised (not traced) silhouettes; failing runs write actual/expected/diff PFMs into the

@@ -1,4 +1,4 @@
-// Surfaces against physics.md by hand: a Lambertian floor under one fixture, and the pan/tilt
+// Surfaces against docs/physics.md by hand: a Lambertian floor under one fixture, and the pan/tilt
 // convention moving the lit spot where the rotation matrices say.
 #include <cmath>
 
@@ -81,7 +81,7 @@ glm::vec2 spotCentre(const ImageRGB& img, const FrameState& frame) {
   return sw > 0 ? glm::vec2(sx / sw, sz / sw) : glm::vec2(1e9f);
 }
 
-// physics.md: M = R * Ry(pan) * Rx(tilt), beam along M * (0, -1, 0). Worked by hand with
+// docs/physics.md: M = R * Ry(pan) * Rx(tilt), beam along M * (0, -1, 0). Worked by hand with
 // R = identity: Rx(t) * (0, -1, 0) = (0, -cos t, -sin t); then Ry(p) turns it to
 // (-sin t sin p, -cos t, -sin t cos p). From height h the spot's centre is at
 // h * tan t * (-sin p, -cos p) in (x, z).

@@ -55,7 +55,7 @@ TEST(ReferenceSurface, OffAxisFollowsCosineOverRSquaredPixelByPixel) {
   const FrameState f = downBeamFrame(test::uniformDistribution(40.0f, 2000.0f), 80.0f);
   const int w = 64, h = 48;
   const ImageRGB img = renderReference(v, f, w, h);
-  // physics.md's pinhole, written out: camera 10 m up looking down, image top towards -z.
+  // docs/physics.md's pinhole, written out: camera 10 m up looking down, image top towards -z.
   const double tanHalf = std::tan(30.0 * kPiD / 180.0), aspect = double(w) / h;
   int lit = 0, dark = 0;
   for (int j = 0; j < h; ++j) {

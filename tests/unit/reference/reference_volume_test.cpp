@@ -1,8 +1,8 @@
 // The reference's in-scattering L_in against independent answers: the closed form for a uniform
 // beam crossed at right angles (sigma_s I / (4 pi) * 2 alpha / h), the same with a shadow edge,
-// and a brute-force Simpson quadrature of physics.md's integral written out here, for tilted
+// and a brute-force Simpson quadrature of docs/physics.md's integral written out here, for tilted
 // beams, the hazy phase, extinction, a camera inside the cone and a floor that ends the ray.
-// Then the convergence criterion of physics.md on a scene with a sphere's shadow in the beam.
+// Then the convergence criterion of docs/physics.md on a scene with a sphere's shadow in the beam.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -91,7 +91,7 @@ TEST(ReferenceVolume, StepInsideTheDistributionIsResolved) {
   }
 }
 
-// physics.md's L_in for one unshadowed beam, by composite Simpson over t in [0, T] with the
+// docs/physics.md's L_in for one unshadowed beam, by composite Simpson over t in [0, T] with the
 // hazy phase written out: independent of the reference's cone chord and angular march.
 double quadratureLin(const BeamState& beam, const MediumState& m, glm::dvec3 e, glm::dvec3 v,
                      double tEnd) {

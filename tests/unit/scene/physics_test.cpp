@@ -1,4 +1,4 @@
-// physics.h against physics.md: each phase function integrates to 1 over the sphere, HG's mean
+// physics.h against docs/physics.md: each phase function integrates to 1 over the sphere, HG's mean
 // cosine is g, the hazy function's end values, and beamIntensityTowards' beam frame.
 #include <gtest/gtest.h>
 

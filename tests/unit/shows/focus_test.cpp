@@ -65,7 +65,7 @@ TEST(Focus, WithFullTiltAndNoLensOffsetEveryPointIsReached) {
 
 TEST(Focus, PicksTheEquivalentAnswerNearestTheCurrentPanTilt) {
   // Hanging straight down at the origin: pan 90, tilt 45 aims along (-sin45, -cos45, 0)
-  // (physics.md: beam = (-sin t sin p, -cos t, -sin t cos p)). The same beam comes from
+  // (docs/physics.md: beam = (-sin t sin p, -cos t, -sin t cos p)). The same beam comes from
   // (-270, 45), (-90, -45) and (270, -45).
   FocusRequest r;
   glm::vec3 point{-2.0f, -2.0f, 0.0f};

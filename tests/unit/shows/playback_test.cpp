@@ -1,5 +1,5 @@
 // The pure face of playback against tests/data/shows/valid.haze.json, whose cues were built so
-// that every expected value below follows by hand from show-format.md's tracking model.
+// that every expected value below follows by hand from docs/show-format.md's tracking model.
 #include <gtest/gtest.h>
 
 #include "show_test_data.h"

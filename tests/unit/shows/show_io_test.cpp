@@ -1,4 +1,4 @@
-// Loading a show into the model and writing it back: every field of show-format.md arrives,
+// Loading a show into the model and writing it back: every field of docs/show-format.md arrives,
 // a save reloads to the same show, and saving twice gives the same bytes (diffable files).
 #include <fstream>
 #include <sstream>
@@ -105,7 +105,7 @@ TEST(ShowIo, WrittenTextIsDiffable) {
   auto a = loadShow(validShowPath());
   ASSERT_TRUE(a.ok());
   std::string text = showToText(*a);
-  // The key order of show-format.md, numbers in their short form, number arrays on one line.
+  // The key order of docs/show-format.md, numbers in their short form, number arrays on one line.
   EXPECT_LT(text.find("\"format\""), text.find("\"version\""));
   EXPECT_LT(text.find("\"version\""), text.find("\"venue\""));
   EXPECT_LT(text.find("\"atmosphere\""), text.find("\"cameras\""));
