@@ -1,12 +1,12 @@
 // haze compare IMAGE.pfm REFERENCE.pfm [--threshold F] [--max-error E] [--json]: the accuracy
 // metric of renderer/scene/image_compare.h on two PFMs, so shell tests and users read the very
 // number the render tests assert on and `haze bench --compare-reference` reports.
-#include <charconv>
 #include <cstdio>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "app/command_line.h"
 #include "app/commands.h"
 #include "renderer/scene/image.h"
 #include "renderer/scene/image_compare.h"
@@ -27,40 +27,19 @@ int fail(const std::string& line) {
   return 1;
 }
 
-bool parseNumber(const std::string& s, double& out) {
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size();
-}
-
 }  // namespace
 
 int runCompare(const Args& args) {
   std::string imagePath, referencePath;
   double threshold = 0.01, maxError = -1.0;  // < 0: no limit
   bool json = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto number = [&](double& dst) { return i + 1 < args.size() && parseNumber(args[++i], dst); };
-    if (a == "--threshold") {
-      if (!number(threshold) || threshold < 0.0 || threshold >= 1.0)
-        return fail("--threshold needs a fraction of the reference's maximum, 0 <= F < 1");
-    } else if (a == "--max-error") {
-      if (!number(maxError) || maxError < 0.0) return fail("--max-error needs a mean relative error >= 0");
-    } else if (a == "--json") {
-      json = true;
-    } else if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    } else if (!a.empty() && a[0] == '-') {
-      return fail("unknown option '" + a + "' (see haze compare --help)");
-    } else if (imagePath.empty()) {
-      imagePath = a;
-    } else if (referencePath.empty()) {
-      referencePath = a;
-    } else {
-      return fail("unexpected argument '" + a + "' (one image and one reference)");
-    }
-  }
+  CommandLine cli("haze compare", kUsage);
+  cli.number("--threshold", threshold, 0.0, 0.999999, "a fraction of the reference's maximum, 0 <= F < 1")
+      .number("--max-error", maxError, 0.0, 1e9, "a mean relative error >= 0")
+      .flag("--json", json)
+      .positional(imagePath, "image")
+      .positional(referencePath, "reference");
+  if (auto done = cli.parse(args)) return *done;
   if (referencePath.empty()) return fail("expected IMAGE.pfm REFERENCE.pfm (see haze compare --help)");
   auto image = readPfm(imagePath);
   if (!image) return fail(image.error().str());

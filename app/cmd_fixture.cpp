@@ -2,6 +2,7 @@
 // on stdout; a bad file or bad arguments give one line on stderr and exit status 1.
 #include <iostream>
 
+#include "app/command_line.h"
 #include "app/commands.h"
 #include "fixtures/facts.h"
 #include "fixtures/profile.h"
@@ -31,23 +32,9 @@ int runFixture(const Args& args) {
   }
   std::string file;
   bool json = false;
-  for (size_t i = 1; i < args.size(); ++i) {
-    if (args[i] == "--json") {
-      json = true;
-    } else if (!args[i].empty() && args[i][0] == '-') {
-      std::cerr << "haze fixture info: unknown option \"" << args[i] << "\"; " << kUsage << "\n";
-      return 1;
-    } else if (file.empty()) {
-      file = args[i];
-    } else {
-      std::cerr << "haze fixture info: more than one file given; " << kUsage << "\n";
-      return 1;
-    }
-  }
-  if (file.empty()) {
-    std::cerr << "haze fixture info: no file given; " << kUsage << "\n";
-    return 1;
-  }
+  CommandLine cli("haze fixture info", std::string(kUsage) + "\n");
+  cli.flag("--json", json).positional(file, "file");
+  if (auto done = cli.parse(Args(args.begin() + 1, args.end()))) return *done;
   auto profile = loadProfile(file);
   if (!profile) {
     std::cerr << profile.error().str() << "\n";

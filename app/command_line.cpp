@@ -73,6 +73,12 @@ CommandLine& CommandLine::integer(const std::string& names, int& dst, int lo, in
   return *this;
 }
 
+CommandLine& CommandLine::custom(const std::string& names, const std::string& need,
+                                 std::function<bool(const std::string&)> accept) {
+  options_.push_back({splitNames(names), true, need, std::move(accept)});
+  return *this;
+}
+
 CommandLine& CommandLine::positional(std::string& dst, const std::string& what, bool required) {
   positionals_.push_back({&dst, what, required});
   return *this;
@@ -115,7 +121,8 @@ std::optional<int> CommandLine::parse(const Args& args) const {
     *positionals_[nextPositional++].dst = a;
   }
   for (size_t k = nextPositional; k < positionals_.size(); ++k)
-    if (positionals_[k].required) return fail("no " + positionals_[k].what + " given (see " + command_ + " --help)");
+    if (positionals_[k].required)
+      return fail("no " + positionals_[k].what + " given; " + usage_.substr(0, usage_.find('\n')));
   return std::nullopt;
 }
 

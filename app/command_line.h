@@ -23,6 +23,9 @@ class CommandLine {
   CommandLine& choice(const std::string& names, std::string& dst, const std::vector<std::string>& choices);
   CommandLine& number(const std::string& names, double& dst, double lo, double hi, const std::string& need);
   CommandLine& integer(const std::string& names, int& dst, int lo, int hi, const std::string& need);
+  // Any other value: `accept` takes it (it may be called again, for a repeatable option) and
+  // returns false when the value is not acceptable.
+  CommandLine& custom(const std::string& names, const std::string& need, std::function<bool(const std::string&)> accept);
   // Positional arguments in order; `what` names one in errors ("show"). A missing required one
   // is an error, a second of the last kind is too.
   CommandLine& positional(std::string& dst, const std::string& what, bool required = true);

@@ -18,6 +18,7 @@
 
 #include "app/commands.h"
 #include "app/frame_builder.h"
+#include "app/command_line.h"
 #include "app/gui/gui.h"
 #include "shows/edit/recent_files.h"
 #include "app/render_session.h"
@@ -39,7 +40,6 @@ struct Options {
   std::optional<Quality> quality;
   std::vector<int> select;
   bool help = false;
-  bool usage = false;
   std::string tab;  // the show panel's tab to show first
   bool artNet = false, sacn = false;  // live DMX input from a console drives the fixtures
   std::string bind = "127.0.0.1";
@@ -70,47 +70,35 @@ Status saveScreenshot(int width, int height, const std::string& file) {
   return writePng8(rgb, width, height, file);
 }
 
-// Parses `haze open` options; an Error names the bad one.
-Result<Options> parseOptions(const Args& args) {
-  Options opt;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const bool hasValue = i + 1 < args.size();
-    auto intValue = [&](int& dst) {
-      if (!hasValue) return false;
-      const std::string& s = args[++i];
-      return std::from_chars(s.data(), s.data() + s.size(), dst).ec == std::errc() && dst > 0;
-    };
-    auto need = [&](const char* what) { return Error{"", a, std::string("needs ") + what}; };
-    if (a == "--screenshot") { if (!hasValue) return need("a file name"); opt.screenshot = args[++i]; }
-    else if (a == "--artnet") opt.artNet = true;
-    else if (a == "--sacn") opt.sacn = true;
-    else if (a == "--help-window") opt.help = true;
-    else if (a == "--help" || a == "-h") opt.usage = true;
-    else if (a == "--bind") { if (!hasValue) return need("an address"); opt.bind = args[++i]; }
-    else if (a == "--tab") { if (!hasValue) return need("cues, fixtures, library, patch or air"); opt.tab = args[++i]; }
-    else if (a == "--cue") { if (!hasValue) return need("a cue number"); opt.cue = args[++i]; }
-    else if (a == "--frames") { if (!intValue(opt.frames)) return need("a positive number"); }
-    else if (a == "--width") { if (!intValue(opt.width)) return need("a positive number"); }
-    else if (a == "--height") { if (!intValue(opt.height)) return need("a positive number"); }
-    else if (a == "--select") {
-      int id = 0;
-      if (!intValue(id)) return need("a fixture id");
-      opt.select.push_back(id);
-    } else if (a == "--quality") {
-      if (!hasValue) return need("draft, default or high");
-      auto q = parseQuality(args[++i]);
-      if (!q) return q.error();
-      opt.quality = *q;
-    } else if (!a.empty() && a[0] == '-') {
-      return Error{"", "open", "unknown option '" + a + "'"};
-    } else {
-      opt.show = a;
-    }
-  }
+// Parses `haze open` options; nullopt: go on, else the exit status (usage printed or an error).
+std::optional<int> parseOptions(const Args& args, Options& opt) {
+  std::string quality;
+  CommandLine cli("haze open", kUsage);
+  cli.text("--screenshot", opt.screenshot, "a file name")
+      .flag("--artnet", opt.artNet)
+      .flag("--sacn", opt.sacn)
+      .flag("--help-window", opt.help)
+      .text("--bind", opt.bind, "an address")
+      .text("--tab", opt.tab, "cues, fixtures, library, patch or air")
+      .text("--cue", opt.cue, "a cue number")
+      .integer("--frames", opt.frames, 1, 1000000, "a positive number")
+      .integer("--width", opt.width, 1, 16384, "a positive number")
+      .integer("--height", opt.height, 1, 16384, "a positive number")
+      .custom("--select", "a fixture id",
+              [&opt](const std::string& v) {
+                int id = 0;
+                const auto r = std::from_chars(v.data(), v.data() + v.size(), id);
+                if (r.ec != std::errc() || r.ptr != v.data() + v.size() || id <= 0) return false;
+                opt.select.push_back(id);
+                return true;
+              })
+      .choice("--quality", quality, {"draft", "default", "high"})
+      .positional(opt.show, "show", false);
+  if (auto done = cli.parse(args)) return done;
+  if (!quality.empty()) opt.quality = *parseQuality(quality);
   if (opt.show.empty()) opt.show = HAZE_DEMO_SHOW;
   if (!opt.screenshot.empty() && opt.frames <= 0) opt.frames = 3;
-  return opt;
+  return std::nullopt;
 }
 
 // The command line's choices that need the open show: cue, selection, tab, live input.
@@ -273,13 +261,8 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
 }  // namespace
 
 int runGui(const Args& args) {
-  auto parsed = parseOptions(args);
-  if (!parsed) return fail(parsed.error().str());
-  const Options opt = std::move(*parsed);
-  if (opt.usage) {
-    std::fputs(kUsage, stdout);
-    return 0;
-  }
+  Options opt;
+  if (auto done = parseOptions(args, opt)) return *done;
 
   Gui gui;
   auto opened = ShowDocument::open(opt.show);
