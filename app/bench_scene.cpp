@@ -14,20 +14,17 @@
 namespace haze {
 
 Venue benchVenue() {
-  Venue v;
-  v.materials.push_back(Material{.name = "default"});
-  v.materials.push_back(Material{.name = "deck", .baseColor = glm::vec4(0.2f, 0.2f, 0.2f, 1)});
-  v.materials.push_back(Material{.name = "walls", .baseColor = glm::vec4(0.35f, 0.35f, 0.38f, 1)});
-  v.materials.push_back(Material{.name = "set", .baseColor = glm::vec4(0.6f, 0.55f, 0.5f, 1)});
-  v.boundsMin = glm::vec3(1e9f);
-  v.boundsMax = glm::vec3(-1e9f);
-  addBox(v, {-10, -0.1f, -8}, {10, 0, 6}, 1);      // deck and house floor
-  addBox(v, {-10, 0, -8.2f}, {10, 9, -8}, 2);      // back wall
-  addBox(v, {-10.2f, 0, -8}, {-10, 9, 6}, 2);      // side walls
-  addBox(v, {10, 0, -8}, {10.2f, 9, 6}, 2);
-  for (float x : {-4.0f, 0.0f, 4.0f}) addBox(v, {x - 0.3f, 0, -3.3f}, {x + 0.3f, 3.5f, -2.7f}, 3);  // columns
-  for (float x : {-2.5f, -1.5f, -0.5f, 0.5f, 1.5f, 2.5f})                                       // slatted panel
-    addBox(v, {x - 0.3f, 4.5f, -1.05f}, {x + 0.3f, 4.6f, -0.95f}, 3);
+  Venue v = emptyVenue();
+  const int deck = addMaterial(v, "deck", glm::vec3(0.2f));
+  const int walls = addMaterial(v, "walls", glm::vec3(0.35f, 0.35f, 0.38f));
+  const int set = addMaterial(v, "set", glm::vec3(0.6f, 0.55f, 0.5f));
+  addBox(v, {-10, -0.1f, -8}, {10, 0, 6}, deck);  // deck and house floor
+  addBox(v, {-10, 0, -8.2f}, {10, 9, -8}, walls);  // back wall
+  addBox(v, {-10.2f, 0, -8}, {-10, 9, 6}, walls);  // side walls
+  addBox(v, {10, 0, -8}, {10.2f, 9, 6}, walls);
+  for (float x : {-4.0f, 0.0f, 4.0f}) addBox(v, {x - 0.3f, 0, -3.3f}, {x + 0.3f, 3.5f, -2.7f}, set);  // columns
+  for (float x : {-2.5f, -1.5f, -0.5f, 0.5f, 1.5f, 2.5f})                                         // slatted panel
+    addBox(v, {x - 0.3f, 4.5f, -1.05f}, {x + 0.3f, 4.6f, -0.95f}, set);
   return v;
 }
 
@@ -68,34 +65,10 @@ FrameState benchFrame(int fixtures) {
 }
 
 Venue studyVenue() {
-  Venue v;
-  v.materials.push_back(Material{.name = "default"});
-  v.materials.push_back(Material{.name = "floor", .baseColor = glm::vec4(0.4f, 0.4f, 0.4f, 1)});
-  v.boundsMin = glm::vec3(1e9f);
-  v.boundsMax = glm::vec3(-1e9f);
-  addBox(v, {-8, -0.1f, -8}, {8, 0, 8}, 1);
-  // A sphere (UV, 24 x 48) in the beam.
-  Primitive p;
-  p.name = "sphere";
-  p.material = 1;
-  const glm::vec3 c(0.3f, 3.0f, 0.0f);
-  const float radius = 0.6f;
-  const int rings = 24, segments = 48;
-  for (int j = 0; j <= rings; ++j)
-    for (int i = 0; i <= segments; ++i) {
-      const float th = 3.14159265f * static_cast<float>(j) / rings, ph = 6.2831853f * static_cast<float>(i) / segments;
-      const glm::vec3 n(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
-      p.positions.push_back(c + radius * n);
-      p.normals.push_back(n);
-    }
-  for (int j = 0; j < rings; ++j)
-    for (int i = 0; i < segments; ++i) {
-      const auto a = static_cast<uint32_t>(j * (segments + 1) + i), b = a + 1, d = a + segments + 1, e = d + 1;
-      p.indices.insert(p.indices.end(), {a, d, b, b, d, e});
-    }
-  v.primitives.push_back(std::move(p));
-  v.boundsMin = glm::min(v.boundsMin, c - glm::vec3(radius));
-  v.boundsMax = glm::max(v.boundsMax, c + glm::vec3(radius));
+  Venue v = emptyVenue();
+  const int floor = addMaterial(v, "floor", glm::vec3(0.4f));
+  addBox(v, {-8, -0.1f, -8}, {8, 0, 8}, floor);
+  addUvSphere(v, {0.3f, 3.0f, 0.0f}, 0.6f, 24, 48, floor);  // in the beam
   return v;
 }
 
