@@ -151,6 +151,8 @@ const StageState& DmxInput::poll(double nowS) {
   merger_.expire(nowS);
   if (merger_.generation() != decodedGeneration_) {
     state_ = decodeStage(show_, profiles_, [&](int u) { return merger_.universe(u); });
+    for (const FixtureDef& f : show_.fixtures)
+      if (f.patch && merger_.blackedOut(f.patch->universe)) state_[f.id].intensity = 0.0f;
     decodedGeneration_ = merger_.generation();
   }
   return state_;

@@ -112,9 +112,10 @@ int DmxMerger::expire(double nowS) {
 void DmxMerger::remerge(Universe& u) {
   ++generation_;
   if (u.sources.empty()) {
-    if (options_.onLoss == LossPolicy::Blackout) u.merged.reset();
+    u.blackedOut = options_.onLoss == LossPolicy::Blackout && u.merged.has_value();
     return;
   }
+  u.blackedOut = false;
   int top = -1;
   for (const auto& [id, s] : u.sources) top = std::max(top, s.priority);
   DmxBuffer merged{};
@@ -129,6 +130,11 @@ const DmxBuffer* DmxMerger::universe(int number) const {
   auto it = universes_.find(number);
   if (it == universes_.end() || !it->second.merged) return nullptr;
   return &*it->second.merged;
+}
+
+bool DmxMerger::blackedOut(int number) const {
+  auto it = universes_.find(number);
+  return it != universes_.end() && it->second.blackedOut;
 }
 
 std::vector<int> DmxMerger::activeUniverses() const {

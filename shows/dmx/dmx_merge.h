@@ -54,7 +54,8 @@ enum class MergeVerdict {
 
 enum class LossPolicy {
   HoldLastLook,  // a universe whose sources are all gone keeps its last merged levels
-  Blackout,      // ... or drops to all zeros
+  Blackout,      // ... or the light goes out: intensity 0, every other attribute held (what a
+                 // moving light set to "blackout on DMX loss" does: it closes, its head stays put)
 };
 
 struct MergeOptions {
@@ -83,8 +84,10 @@ class DmxMerger {
   // Drops sources silent longer than their timeout; returns how many left.
   int expire(double nowS);
 
-  // The merged levels of a universe; nullptr while it never had data (or after a blackout loss).
+  // The merged levels of a universe (the last ones after a loss); nullptr while it never had data.
   const DmxBuffer* universe(int universe) const;
+  // True while a universe has lost every source under LossPolicy::Blackout: its fixtures are dark.
+  bool blackedOut(int universe) const;
   std::vector<int> activeUniverses() const;
   std::vector<DmxSourceInfo> sources() const;
   // Bumped whenever any merged buffer may have changed: cheap "redecode?" test for pollers.
@@ -102,6 +105,7 @@ class DmxMerger {
   struct Universe {
     std::map<DmxSourceId, Source> sources;
     std::optional<DmxBuffer> merged;
+    bool blackedOut = false;
   };
   void remerge(Universe& u);
 

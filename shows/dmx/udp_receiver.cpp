@@ -25,12 +25,16 @@ std::string ipString(uint32_t hostOrder) {
   return s;
 }
 
-// A non-blocking UDP socket bound to address:port; port 0 picks a free one.
-Result<int> bindUdp(uint32_t addressHostOrder, int port, bool reuse, const char* what) {
+// A non-blocking UDP socket bound to address:port; port 0 picks a free one. The port is shared
+// (SO_REUSEADDR and SO_REUSEPORT): a technician's laptop often runs olad or another visualiser
+// on 6454 and 5568 too. Broadcast and multicast datagrams then reach every program; a unicast
+// one reaches only one of them, the kernel's choice (docs/live.md).
+Result<int> bindUdp(uint32_t addressHostOrder, int port, const char* what) {
   const int fd = ::socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
   if (fd < 0) return Error{"", "", std::string("cannot create the ") + what + " socket: " + std::strerror(errno)};
   const int one = 1;
-  if (reuse) setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  setsockopt(fd, SOL_SOCKET, SO_REUSEPORT, &one, sizeof one);
   const int rcvbuf = 1 << 20;  // bursts from a console's many universes
   setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &rcvbuf, sizeof rcvbuf);
   sockaddr_in sa{};
@@ -70,13 +74,13 @@ Result<std::unique_ptr<UdpReceiver>> UdpReceiver::open(const UdpReceiverOptions&
   const bool loopback = (address >> 24) == 127;
   std::unique_ptr<UdpReceiver> r(new UdpReceiver());
   if (o.artNet) {
-    auto fd = bindUdp(address, o.artNetPort, false, "Art-Net");
+    auto fd = bindUdp(address, o.artNetPort, "Art-Net");
     if (!fd) return fd.error();
     r->sockets_.push_back({*fd, DmxProtocol::ArtNet});
     r->artNetPort_ = boundPort(*fd);
   }
   if (o.sacn) {
-    auto fd = bindUdp(address, o.sacnPort, false, "sACN");
+    auto fd = bindUdp(address, o.sacnPort, "sACN");
     if (!fd) return fd.error();
     r->sockets_.push_back({*fd, DmxProtocol::Sacn});
     r->sacnPort_ = boundPort(*fd);
@@ -94,7 +98,7 @@ Result<std::unique_ptr<UdpReceiver>> UdpReceiver::open(const UdpReceiverOptions&
         }
         const uint32_t group = sacnMulticastGroup(universe);
         const bool any = address == INADDR_ANY;
-        auto gfd = any ? Result<int>(r->sockets_.back().fd) : bindUdp(group, r->sacnPort_, true, "sACN multicast");
+        auto gfd = any ? Result<int>(r->sockets_.back().fd) : bindUdp(group, r->sacnPort_, "sACN multicast");
         if (!gfd) {
           r->notes_.push_back(gfd.error().message);
           continue;

@@ -53,6 +53,9 @@ check "$tmp/par.json" "$keys" \
   "Math.abs(f.beam_angle_c0 - f.beam_angle_c90) < 1e-3" \
   "f.symmetry === 'axial'" "f.zoom.min === 10 && f.zoom.max === 50" \
   "f.modes[0].name === '6ch' && f.modes[0].footprint === 6" \
+  "f.modes[0].channels.length === 6 && f.modes[0].channels[0].offset === 1 && f.modes[0].channels[0].attribute === 'intensity'" \
+  "f.modes[0].channels[4].attribute === 'zoom' && f.modes[0].channels[4].range[0] === 10 && f.modes[0].channels[4].range[1] === 50" \
+  "f.modes[0].channels[5].name === 'Strobe' && f.modes[0].channels[5].attribute === 'none'" \
   "f.lumens > 500 && f.lumens < 5000"
 
 # SOURCES.md: Ansorg stage spot, axial, 37 gammas, peak ~42,000 cd, FWHM ~10 degrees.

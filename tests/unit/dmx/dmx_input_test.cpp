@@ -36,6 +36,28 @@ TEST(DmxInput, SacnLevelsReachFixturesAtTheirAddresses) {
   EXPECT_EQ(input.sources()[0].name, "test console");
 }
 
+// On loss, hold keeps the look; blackout puts the light out and keeps the heads where they were
+// (what a moving light set to blackout on DMX loss does), never the positions zeros decode to.
+TEST(DmxInput, LossHoldsOrBlacksOutWithoutMovingHeads) {
+  for (LossPolicy policy : {LossPolicy::HoldLastLook, LossPolicy::Blackout}) {
+    const test::TestShow t = test::makeTestShow();
+    DmxInputOptions o;
+    o.merge.onLoss = policy;
+    DmxInput input(t.show, t.profiles, o);
+    test::SacnFields f;
+    f.universe = 1;
+    f.slots[0] = 255;                      // 101 dimmer
+    f.slots[1] = 0xC0; f.slots[2] = 0x00;  // 101 pan, well off both ends
+    input.receive(DmxProtocol::Sacn, test::sacn(f), kLocalhost, 50000, 0.0);
+    const Attributes live = input.poll(0.0).at(101);
+    ASSERT_FLOAT_EQ(live.intensity, 1.0f);
+    const Attributes after = input.poll(10.0).at(101);  // sACN sources expire after 2.5 s
+    EXPECT_FLOAT_EQ(after.panDeg, live.panDeg) << "the head holds its position either way";
+    EXPECT_FLOAT_EQ(after.tiltDeg, live.tiltDeg);
+    EXPECT_FLOAT_EQ(after.intensity, policy == LossPolicy::HoldLastLook ? 1.0f : 0.0f);
+  }
+}
+
 TEST(DmxInput, ArtNetPortAddressZeroIsUniverseOne) {
   const test::TestShow t = test::makeTestShow();
   DmxInput input(t.show, t.profiles);

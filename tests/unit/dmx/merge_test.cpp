@@ -92,8 +92,13 @@ TEST(Merge, LossHoldsLastLookOrBlacksOut) {
     DmxMerger m(o);
     Sender a{cid(1), 100, {77}};
     ASSERT_EQ(m.submit(a.frame(), 0.0), MergeVerdict::Accepted);
+    EXPECT_FALSE(m.blackedOut(1));
     m.expire(3.0);
-    EXPECT_EQ(m.universe(1), nullptr);
+    EXPECT_TRUE(m.blackedOut(1));
+    ASSERT_NE(m.universe(1), nullptr) << "the last levels stay, so heads hold where they were";
+    EXPECT_EQ((*m.universe(1))[0], 77);
+    ASSERT_EQ(m.submit(a.frame(), 4.0), MergeVerdict::Accepted);
+    EXPECT_FALSE(m.blackedOut(1)) << "a source coming back lights the universe again";
   }
 }
 
