@@ -58,6 +58,9 @@ void printReport(const LiveReceiver& live, double seconds) {
                static_cast<unsigned long long>(s.terminated),
                static_cast<unsigned long long>(s.unwatched),
                static_cast<unsigned long long>(s.exceeded));
+  if (const int polls = live.udp().artPollsAnswered(); polls > 0)
+    std::fprintf(stderr, "haze live: answered %d ArtPoll%s (ArtPollReply: a visualiser with the patched universes)\n",
+                 polls, polls == 1 ? "" : "s");
   for (const auto& [reason, count] : s.malformed) {
     std::fprintf(stderr, "haze live: malformed %s: %llu\n", reason.c_str(),
                  static_cast<unsigned long long>(count));

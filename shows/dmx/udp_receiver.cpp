@@ -2,6 +2,8 @@
 // number of datagrams per pump so a flood cannot stall the frame loop.
 #include "shows/dmx/udp_receiver.h"
 
+#include "shows/dmx/artnet_poll.h"
+
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
@@ -73,6 +75,9 @@ Result<std::unique_ptr<UdpReceiver>> UdpReceiver::open(const UdpReceiverOptions&
   const uint32_t address = ntohl(bindAddr.s_addr);
   const bool loopback = (address >> 24) == 127;
   std::unique_ptr<UdpReceiver> r(new UdpReceiver());
+  r->bindAddress_ = address;
+  r->artNetUniverses_ = o.artNetUniverses;
+  r->answerArtPoll_ = o.answerArtPoll;
   if (o.artNet) {
     auto fd = bindUdp(address, o.artNetPort, "Art-Net");
     if (!fd) return fd.error();
@@ -142,11 +147,35 @@ int UdpReceiver::pump(DmxInput& input, double nowS, int waitMs, int maxDatagrams
                                    reinterpret_cast<sockaddr*>(&from), &fromLen);
       if (n < 0) break;  // EAGAIN: drained (other errors: try again next pump)
       ++read;
+      const std::span<const uint8_t> datagram(buffer, static_cast<size_t>(n));
+      if (sockets_[i].protocol == DmxProtocol::ArtNet && answerArtPoll_ && isArtPoll(datagram))
+        answerArtPoll(fds[i].fd, from);
       input.receive(sockets_[i].protocol, std::span<const uint8_t>(buffer, static_cast<size_t>(n)),
                     ntohl(from.sin_addr.s_addr), ntohs(from.sin_port), nowS);
     }
   }
   return read;
+}
+
+// Art-Net 4 unicasts the reply to the controller that polled; every console binds 6454, so its
+// source port is where it listens. The IP field names the address the console reached: the
+// bound one, or (bound to all) the local address of the route towards the console.
+void UdpReceiver::answerArtPoll(int fd, const sockaddr_in& from) {
+  ArtNodeInfo node;
+  node.ipv4 = bindAddress_;
+  if (node.ipv4 == INADDR_ANY) {
+    const int probe = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+    sockaddr_in local{};
+    socklen_t len = sizeof local;
+    if (probe >= 0 && ::connect(probe, reinterpret_cast<const sockaddr*>(&from), sizeof from) == 0 &&
+        ::getsockname(probe, reinterpret_cast<sockaddr*>(&local), &len) == 0)
+      node.ipv4 = ntohl(local.sin_addr.s_addr);
+    if (probe >= 0) ::close(probe);
+  }
+  node.hazeUniverses = artNetUniverses_;
+  for (const std::vector<uint8_t>& reply : artPollReplies(node))
+    ::sendto(fd, reply.data(), reply.size(), 0, reinterpret_cast<const sockaddr*>(&from), sizeof from);
+  ++artPollsAnswered_;
 }
 
 double LiveReceiver::nowS() {
@@ -156,6 +185,7 @@ double LiveReceiver::nowS() {
 Result<std::unique_ptr<LiveReceiver>> LiveReceiver::open(const Show& show, const ProfileSet& profiles,
                                                          LiveOptions options) {
   if (options.udp.sacnUniverses.empty()) options.udp.sacnUniverses = patchedUniverses(show);
+  if (options.udp.artNetUniverses.empty()) options.udp.artNetUniverses = patchedUniverses(show);
   auto udp = UdpReceiver::open(options.udp);
   if (!udp) return udp.error();
   std::unique_ptr<LiveReceiver> r(new LiveReceiver(show, profiles, options.input));

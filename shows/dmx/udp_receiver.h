@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstdint>
+
+#include <netinet/in.h>
 #include <memory>
 #include <set>
 #include <string>
@@ -24,6 +26,8 @@ struct UdpReceiverOptions {
   int sacnPort = 5568;
   bool multicast = false;          // join the sACN groups even on loopback
   std::set<int> sacnUniverses;     // groups to join (the show's patched universes)
+  std::set<int> artNetUniverses;   // the output ports an ArtPollReply lists (the patched universes)
+  bool answerArtPoll = true;       // reply to consoles' ArtPoll, so they send to haze
   int maxMulticastGroups = 64;     // at most this many universes joined
 };
 
@@ -41,6 +45,7 @@ class UdpReceiver {
   int artNetPort() const { return artNetPort_; }  // the bound ports (0 when not listening)
   int sacnPort() const { return sacnPort_; }
   const std::vector<std::string>& notes() const { return notes_; }  // "joined 239.255.0.1"...
+  int artPollsAnswered() const { return artPollsAnswered_; }
 
  private:
   UdpReceiver() = default;
@@ -52,6 +57,12 @@ class UdpReceiver {
   int artNetPort_ = 0;
   int sacnPort_ = 0;
   std::vector<std::string> notes_;
+  uint32_t bindAddress_ = 0;  // host order
+  std::set<int> artNetUniverses_;
+  bool answerArtPoll_ = true;
+  int artPollsAnswered_ = 0;
+
+  void answerArtPoll(int fd, const sockaddr_in& from);
 };
 
 struct LiveOptions {
