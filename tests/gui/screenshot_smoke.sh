@@ -4,7 +4,7 @@
 set -euo pipefail
 haze=$1; root=$2
 . "$root/tests/gui/xvfb.bash"
-start_xvfb
+start_xvfb 93
 out=$(mktemp -d)
 "$haze" open "$root/examples/demo/demo.haze.json" --width 640 --height 360 --screenshot "$out/shot.png" --frames 3
 [ -s "$out/shot.png" ] || { echo "FAIL: no screenshot"; exit 1; }

@@ -1,24 +1,26 @@
-# Sourced by GUI tests: starts Xvfb on a display number of its own choosing (-displayfd, so GUI
-# tests that run in parallel never share a display and drive each other's windows) and stops
-# it on exit.
+# Sourced by GUI tests: start_xvfb N starts Xvfb on display :N and stops it on exit. Each GUI
+# test has a display number of its own (input_events 91, import_mvr 92, screenshot_smoke 93,
+# walkthrough 94), so tests that run in parallel never share a display or drive each other's
+# windows, and no test ever picks a number while another server is starting or shutting down:
+# with -displayfd two servers racing for the same number could hand a test a display that went
+# away a moment later (the cause of a GUI test failing once with "no display").
 start_xvfb() {
+  local n=$1
   command -v Xvfb >/dev/null || { echo "FAIL: Xvfb is not installed (make deps installs xvfb)"; exit 1; }
-  local dfile
-  dfile=$(mktemp)
-  Xvfb -displayfd 9 -screen 0 1280x800x24 -nolisten tcp 9>"$dfile" >/dev/null 2>&1 &
+  if [ -e "/tmp/.X$n-lock" ] && kill -0 "$(tr -dc '0-9' < "/tmp/.X$n-lock")" 2>/dev/null; then
+    echo "FAIL: display :$n is taken by a running X server (pid $(tr -dc '0-9' < "/tmp/.X$n-lock")); stop it to run this test"
+    exit 1
+  fi
+  Xvfb ":$n" -screen 0 1280x800x24 -nolisten tcp >/dev/null 2>&1 &
   XVFB_PID=$!
   trap 'kill $XVFB_PID 2>/dev/null' EXIT
+  export DISPLAY=":$n"
+  # Ready when a client can connect (xdotool asks the server for the screen size).
   for _ in $(seq 100); do
-    [ -s "$dfile" ] && break
+    xdotool getdisplaygeometry >/dev/null 2>&1 && return 0
     kill -0 $XVFB_PID 2>/dev/null || break
     sleep 0.1
   done
-  local n
-  n=$(tr -dc '0-9' <"$dfile")
-  rm -f "$dfile"
-  if [ -z "$n" ] || ! kill -0 $XVFB_PID 2>/dev/null; then
-    echo "FAIL: could not start Xvfb"
-    exit 1
-  fi
-  export DISPLAY=:$n
+  echo "FAIL: could not start Xvfb on :$n"
+  exit 1
 }
