@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# The picture a designer sees first: the Capture rig and the theatre rig, imported and rendered
+# with no exposure option, and every cue of the demo, are metered like a camera: fewer than 2 %
+# of the pixels clip to white and at least a fifth of the frame is above black. The PNGs are read
+# by png_shares.py (zlib and the PNG filters), not by haze. A manual EV 0 render of the Capture
+# rig shows what the meter fixes: it is a white sheet.
+# Usage: exposure_rigs.sh HAZE REPO
+set -u
+haze=$1
+repo=$2
+data=$repo/../shared/data/gdtf/mvr
+shares="python3 $repo/tests/cli/png_shares.py"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+passed=0
+check() {  # check NAME FILE: its shares are within the limits
+  read -r _ clipped lit <<<"$($shares "$2")"
+  echo "$1: $clipped % clipped, $lit % above black"
+  if awk -v c="$clipped" -v l="$lit" 'BEGIN { exit !(c < 2 && l >= 20) }'; then
+    passed=$((passed + 1))
+  else
+    echo "FAIL: $1: $clipped % clipped (limit 2), $lit % above black (at least 20)"
+    fail=$((fail + 1))
+  fi
+}
+
+for rig in capture_demo_show scene_objects; do
+  if ! "$haze" import-mvr "$data/$rig.mvr" -o "$tmp/$rig.haze.json" >/dev/null 2>"$tmp/$rig.err"; then
+    echo "FAIL: $rig: import-mvr: $(head -2 "$tmp/$rig.err")"; fail=$((fail + 1)); continue
+  fi
+  if ! "$haze" render "$tmp/$rig.haze.json" --width 640 --height 360 -o "$tmp/$rig.png" 2>"$tmp/$rig.err"; then
+    echo "FAIL: $rig: render: $(head -2 "$tmp/$rig.err")"; fail=$((fail + 1)); continue
+  fi
+  check "$rig" "$tmp/$rig.png"
+done
+
+if [ -f "$tmp/capture_demo_show.haze.json" ]; then
+  "$haze" render "$tmp/capture_demo_show.haze.json" --width 160 --height 90 --exposure-mode manual \
+    -o "$tmp/manual.png" 2>/dev/null
+  read -r _ clipped _ <<<"$($shares "$tmp/manual.png")"
+  echo "capture_demo_show at manual EV 0: $clipped % clipped"
+  if awk -v c="$clipped" 'BEGIN { exit !(c > 20) }'; then passed=$((passed + 1)); else
+    echo "FAIL: manual EV 0 should keep today's absolute key (a white sheet), got $clipped % clipped"
+    fail=$((fail + 1))
+  fi
+fi
+
+if "$haze" render "$repo/examples/demo/demo.haze.json" --all-cues --width 640 --height 360 -o "$tmp/demo/" \
+  >/dev/null 2>"$tmp/demo.err"; then
+  for png in "$tmp/demo"/cue-*.png; do check "demo $(basename "$png" .png)" "$png"; done
+else
+  echo "FAIL: demo: render --all-cues: $(head -2 "$tmp/demo.err")"; fail=$((fail + 1))
+fi
+
+echo "$passed passed, $fail failed"
+[ "$fail" -eq 0 ]
