@@ -3,7 +3,8 @@
 # with no exposure option, and every cue of the demo, are metered like a camera: fewer than 2 %
 # of the pixels clip to white and at least a fifth of the frame is above black. The PNGs are read
 # by png_shares.py (zlib and the PNG filters), not by haze. A manual EV 0 render of the Capture
-# rig shows what the meter fixes: it is a white sheet.
+# rig (today's fixed key) shows what the meter fixes: to the eye a white sheet, it fails the
+# same 2 % limit (about 5 % of its pixels are exactly white; the rest sit in the shoulder).
 # Usage: exposure_rigs.sh HAZE REPO
 set -u
 haze=$1
@@ -40,8 +41,8 @@ if [ -f "$tmp/capture_demo_show.haze.json" ]; then
     -o "$tmp/manual.png" 2>/dev/null
   read -r _ clipped _ <<<"$($shares "$tmp/manual.png")"
   echo "capture_demo_show at manual EV 0: $clipped % clipped"
-  if awk -v c="$clipped" 'BEGIN { exit !(c > 20) }'; then passed=$((passed + 1)); else
-    echo "FAIL: manual EV 0 should keep today's absolute key (a white sheet), got $clipped % clipped"
+  if awk -v c="$clipped" 'BEGIN { exit !(c > 2) }'; then passed=$((passed + 1)); else
+    echo "FAIL: manual EV 0 should keep today's absolute key (over 2 % white), got $clipped % clipped"
     fail=$((fail + 1))
   fi
 fi
