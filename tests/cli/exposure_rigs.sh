@@ -47,6 +47,27 @@ if [ -f "$tmp/capture_demo_show.haze.json" ]; then
   fi
 fi
 
+# A camera's own exposure is used by --camera NAME, and the command line overrides it.
+if [ -f "$tmp/capture_demo_show.haze.json" ]; then
+  python3 - "$tmp/capture_demo_show.haze.json" "$tmp/cams.haze.json" <<'PY'
+import json, sys
+show = json.load(open(sys.argv[1]))
+dark = dict(show["cameras"][0], name="dark", exposure={"mode": "manual", "ev": -8})
+show["cameras"].append(dark)
+json.dump(show, open(sys.argv[2], "w"), indent=1)
+PY
+  lit() { "$haze" render "$tmp/cams.haze.json" --width 160 --height 90 "$@" -o "$tmp/cam.png" 2>/dev/null &&
+    $shares "$tmp/cam.png" | cut -d' ' -f3; }
+  own=$(lit --camera dark); over=$(lit --camera dark --exposure-mode auto); first=$(lit)
+  echo "camera 'dark' (manual EV -8): $own % above black; with --exposure-mode auto: $over %; first camera: $first %"
+  if awk -v a="$own" -v b="$over" -v c="$first" 'BEGIN { exit !(a + 5 < b && b == c) }'; then
+    passed=$((passed + 1))
+  else
+    echo "FAIL: the camera's manual exposure is not used, or the command line does not override it"
+    fail=$((fail + 1))
+  fi
+fi
+
 if "$haze" render "$repo/examples/demo/demo.haze.json" --all-cues --width 640 --height 360 -o "$tmp/demo/" \
   >/dev/null 2>"$tmp/demo.err"; then
   for png in "$tmp/demo"/cue-*.png; do check "demo $(basename "$png" .png)" "$png"; done
