@@ -160,14 +160,16 @@ int runBench(const Args& args) {
   auto renderer = Renderer::create(venue, settings);
   if (!renderer) return fail(renderer.error().str());
 
-  std::vector<double> total, cpu, shadow, surfaces, beams, post;
+  std::vector<double> total, cpu, shadow, surfaces, beams, post, meter;
   double coldMs = 0.0;
   uint64_t fragments = 0, scattering = 0;
   for (int f = 0; f <= frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = processCpuMs();
     (*renderer)->render(frame);
-    (void)(*renderer)->readDisplay({});
+    // As a PNG is made: metered (auto exposure), then encoded.
+    const Metering metered = (*renderer)->meter();
+    (void)(*renderer)->readDisplay({.exposureEv = metered.ev});
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const PassTimes& t = (*renderer)->lastTimes();
     if (f == 0) {  // shadow maps and light maps are made here, cached after
@@ -180,6 +182,7 @@ int runBench(const Args& args) {
     surfaces.push_back(t.surfacesMs);
     beams.push_back(t.beamsMs);
     post.push_back(t.postMs);
+    meter.push_back(t.meterMs);
     fragments = t.planeFragments;
     scattering = t.scatteringFragments;
   }
@@ -199,7 +202,7 @@ int runBench(const Args& args) {
   out["median_frame_cpu_ms"] = median(cpu);
   out["cold_frame_ms"] = coldMs;
   out["pass_ms"] = {{"shadow_maps", median(shadow)}, {"surfaces", median(surfaces)}, {"planes", median(beams)},
-                    {"post", median(post)}};
+                    {"post", median(post)}, {"meter", median(meter)}};
   out["plane_fragments"] = fragments;
   out["scattering_fragments"] = scattering;
   if (compare) {
@@ -219,9 +222,9 @@ int runBench(const Args& args) {
     std::printf("%d fixtures at %dx%d, %s (%d planes, scatter 1/%d, %d samples per chord): %.1f ms per frame "
                 "(median of %d; cold %.1f ms)\n", fixtures, width, height, quality.c_str(), rs.planes,
                 rs.scatterDivisor, rs.minSamplesPerChord, median(total), frames, coldMs);
-    std::printf("  shadow maps %.1f  surfaces %.1f  planes %.1f  post %.1f ms; %llu plane fragments (%llu "
+    std::printf("  shadow maps %.1f  surfaces %.1f  planes %.1f  post %.1f  meter %.1f ms; %llu plane fragments (%llu "
                 "scattering); %.0f ms CPU per frame\n", median(shadow), median(surfaces), median(beams),
-                median(post), static_cast<unsigned long long>(fragments),
+                median(post), median(meter), static_cast<unsigned long long>(fragments),
                 static_cast<unsigned long long>(scattering), median(cpu));
     if (compare)
       std::printf("  reference %.0f ms, mean relative error %.4f, %.0fx faster\n", out["reference_ms"].get<double>(),

@@ -3,6 +3,7 @@
 // (or until SIGINT/SIGTERM), then writes the fixtures' final states and/or renders them, and
 // prints what arrived (good packets, drops by reason, rate, sources) to stderr.
 #include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -29,6 +30,7 @@ constexpr const char* kUsage =
     "                 [--state-json OUT.json] [--render OUT.png|OUT.pfm]\n"
     "                 [--artnet-port P] [--sacn-port P] [--multicast] [--on-loss hold|blackout]\n"
     "                 [--no-preview] [--camera NAME] [--width W --height H] [--quality Q]\n"
+    "                 [--exposure EV] [--exposure-mode auto|manual]\n"
     "Listens for Art-Net (UDP 6454) and sACN E1.31 (UDP 5568); neither flag means both.\n"
     "--bind: the local IPv4 address to listen on (default 127.0.0.1: this machine only).\n"
     "sACN universe N is haze universe N; Art-Net Port-Address P (Net:Sub-Net:Universe) is\n"
@@ -79,7 +81,8 @@ void printReport(const LiveReceiver& live, double seconds) {
 }  // namespace
 
 int runLive(const Args& args) {
-  std::string showPath, stateJson, renderOut, onLoss = "hold", quality = "default";
+  std::string showPath, stateJson, renderOut, onLoss = "hold", quality = "default", exposureMode;
+  double exposure = std::nan("");
   LiveOptions options;
   RenderJobOptions render;
   bool artNet = false, sacn = false;
@@ -102,9 +105,13 @@ int runLive(const Args& args) {
       .integer("--width", render.width, 1, 16384, "a whole number 1..16384")
       .integer("--height", render.height, 1, 16384, "a whole number 1..16384")
       .choice("--quality", quality, {"draft", "default", "high", "reference"})
+      .number("--exposure", exposure, -100, 100, "a number of EV")
+      .choice("--exposure-mode", exposureMode, {"auto", "manual"})
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
   if (noPreview) options.input.acceptPreview = false;
+  render.exposureMode = parseExposureMode(exposureMode);
+  if (!std::isnan(exposure)) render.exposureEv = static_cast<float>(exposure);
   const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
   if (quality == "draft") render.quality = Quality::Draft;
   else if (quality == "default") render.quality = Quality::Default;

@@ -1,5 +1,7 @@
 // haze render SHOW [--cue N | --all-cues] [--at S] [--list NAME] [--camera NAME]
-//                  [--width W --height H] [--quality Q] [--exposure EV] [--bloom F] -o OUT.(png|pfm) | DIR/
+//                  [--width W --height H] [--quality Q] [--exposure EV] [--exposure-mode auto|manual]
+//                  [--bloom F] -o OUT.(png|pfm) | DIR/
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -16,15 +18,19 @@ namespace {
 constexpr const char* kUsage =
     "usage: haze render SHOW [--cue N | --all-cues] [--at S] [--list NAME] [--camera NAME]\n"
     "                   [--width W --height H] [--quality draft|default|high|reference] [--exposure EV]\n"
-    "                   [--bloom F] -o OUT.png|OUT.pfm (one image) | -o DIR/ (with --all-cues)\n"
+    "                   [--exposure-mode auto|manual] [--bloom F]\n"
+    "                   -o OUT.png|OUT.pfm (one image) | -o DIR/ (with --all-cues)\n"
     "Without --cue the first cue is rendered; --at S renders S seconds after its GO.\n"
+    "PNGs are metered like a camera (auto, the default) and --exposure EV is an offset from the\n"
+    "metered exposure; with --exposure-mode manual it is absolute (EV 0: 50 cd/m^2 maps to 1).\n"
+    "A camera's \"exposure\" in the show is used unless these are given. PFMs are never exposed.\n"
     "--bloom F spreads the fraction F (0..1) of the light as lens glare in PNGs; PFMs stay radiometric.\n";
 
 }  // namespace
 
 int runRender(const Args& args) {
-  std::string showPath, cue, list, out, camera, quality = "default";
-  double at = -1.0, exposure = 0.0, bloom = 0.0;
+  std::string showPath, cue, list, out, camera, quality = "default", exposureMode;
+  double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
   bool allCues = false;
   CommandLine cli("haze render", kUsage);
@@ -37,6 +43,7 @@ int runRender(const Args& args) {
       .integer("--height", height, 1, 16384, "a whole number 1..16384")
       .choice("--quality", quality, {"draft", "default", "high", "reference"})
       .number("--exposure", exposure, -100, 100, "a number of EV")
+      .choice("--exposure-mode", exposureMode, {"auto", "manual"})
       .number("--bloom", bloom, 0, 1, "a fraction 0..1")
       .text("-o|--output", out, "a file or a folder")
       .positional(showPath, "show");
@@ -56,15 +63,16 @@ int runRender(const Args& args) {
   if (cueList->cues.empty()) return fail(showPath + ": cue list '" + cueList->name + "' has no cues");
 
   RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
-                           .quality = *q};
+                           .quality = *q, .exposureMode = parseExposureMode(exposureMode),
+                           .bloom = static_cast<float>(bloom)};
+  if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
   auto session = RenderSession::open(*show, options);
   if (!session) return fail(session.error().str());
 
   auto renderCue = [&](size_t index, const std::filesystem::path& file) -> bool {
     const StageState state = at >= 0 ? stateAt(*show, *profiles, *cueList, index, at)
                                      : trackedState(*show, *profiles, *cueList, index);
-    const Status s = (*session)->renderToFile(*show, *profiles, state, file, static_cast<float>(exposure),
-                                                    static_cast<float>(bloom));
+    const Status s = (*session)->renderToFile(*show, *profiles, state, file);
     if (!s) {
       fail(s.error().str());
       return false;

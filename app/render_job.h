@@ -3,9 +3,11 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "fixtures/core/result.h"
+#include "renderer/scene/exposure.h"
 #include "shows/playback.h"
 #include "shows/show.h"
 
@@ -18,7 +20,17 @@ struct RenderJobOptions {
   int width = 1280;
   int height = 720;
   Quality quality = Quality::Default;
+  // Over the camera's exposure (CameraDef::exposure), itself over auto at offset 0. A mode other
+  // than the camera's drops the camera's EV too: an absolute EV means nothing as an offset.
+  std::optional<ExposureMode> exposureMode;
+  std::optional<float> exposureEv;
+  float bloom = 0.0f;  // PNG only
 };
+
+// The exposure a PNG of this show gets with these options.
+ExposureChoice exposureChoiceFor(const Show& show, const RenderJobOptions& options);
+// "auto" or "manual" (the command lines' --exposure-mode); "" leaves the mode unset.
+std::optional<ExposureMode> parseExposureMode(const std::string& name);
 
 // Writes out as .png (exposure, tone curve, sRGB) or .pfm (radiometric float).
 Status renderStateToFile(const Show& show, const ProfileSet& profiles, const StageState& state,

@@ -65,7 +65,7 @@ Result<std::unique_ptr<RenderSession>> RenderSession::open(const Show& show, con
 }
 
 Status RenderSession::renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
-                                   const std::filesystem::path& out, float exposureEv, float bloom) {
+                                   const std::filesystem::path& out) {
   auto frame = buildFrame(show, profiles, state, options_.camera);
   if (!frame) return frame.error();
   const std::string ext = out.extension().string();
@@ -81,10 +81,36 @@ Status RenderSession::renderToFile(const Show& show, const ProfileSet& profiles,
   }
   if (ext == ".pfm") return writePfm(renderer_->readRadiance(), out);
   if (ext == ".png") {
-    const auto rgb = renderer_->readDisplay({.exposureEv = exposureEv, .bloom = bloom});
+    const ExposureChoice choice = exposureChoiceFor(show, options_);
+    const float metered = choice.mode == ExposureMode::Auto ? renderer_->meter().ev : 0.0f;
+    lastExposureEv_ = exposureEvFor(choice, metered);
+    const auto rgb = renderer_->readDisplay({.exposureEv = lastExposureEv_, .bloom = options_.bloom});
     return writePng8(rgb, options_.width, options_.height, out);
   }
   return Error{out.string(), "", "unknown image type (expected .png or .pfm)"};
+}
+
+ExposureChoice exposureChoiceFor(const Show& show, const RenderJobOptions& options) {
+  const CameraDef* camera = show.cameras.empty() ? nullptr : &show.cameras.front();
+  if (!options.camera.empty()) {
+    camera = nullptr;
+    for (const CameraDef& c : show.cameras)
+      if (c.name == options.camera) camera = &c;
+  }
+  ExposureChoice choice;
+  if (camera && camera->exposure) {
+    choice.mode = camera->exposure->manual ? ExposureMode::Manual : ExposureMode::Auto;
+    choice.ev = camera->exposure->ev;
+  }
+  if (options.exposureMode && *options.exposureMode != choice.mode) choice = {.mode = *options.exposureMode, .ev = 0.0f};
+  if (options.exposureEv) choice.ev = *options.exposureEv;
+  return choice;
+}
+
+std::optional<ExposureMode> parseExposureMode(const std::string& name) {
+  if (name == "auto") return ExposureMode::Auto;
+  if (name == "manual") return ExposureMode::Manual;
+  return std::nullopt;
 }
 
 Status renderStateToFile(const Show& show, const ProfileSet& profiles, const StageState& state,

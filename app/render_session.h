@@ -21,7 +21,9 @@ class RenderSession {
   static Result<std::unique_ptr<RenderSession>> open(const Show& show, const RenderJobOptions& options);
 
   Status renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
-                      const std::filesystem::path& out, float exposureEv = 0.0f, float bloom = 0.0f);
+                      const std::filesystem::path& out);
+  // The absolute EV of the last PNG (the metered one plus the offset, under auto).
+  float lastExposureEv() const { return lastExposureEv_; }
   Renderer& renderer() { return *renderer_; }
   const Venue& venue() const { return venue_; }
 
@@ -30,6 +32,7 @@ class RenderSession {
   std::unique_ptr<GlContext> context_;
   Venue venue_;
   std::unique_ptr<Renderer> renderer_;
+  float lastExposureEv_ = 0.0f;
 };
 
 }  // namespace haze

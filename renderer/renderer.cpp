@@ -272,3 +272,29 @@ std::vector<unsigned char> Renderer::readDisplay(const DisplaySettings& display)
 }
 
 }  // namespace haze
+
+namespace haze {
+
+Metering Renderer::meter(const MeterSettings& settings) {
+  Impl& m = *impl_;
+  const auto t0 = std::chrono::steady_clock::now();
+  // Box-filtered mip levels average the light over blocks: a lamp's lens or a thin beam edge
+  // a few pixels wide then weighs by its area, as on a camera's metering sensor, and the
+  // readback is a few thousand texels however large the image.
+  constexpr int kMeterTexels = 64;
+  const int longSide = std::max(settings_.width, settings_.height);
+  int level = 0;
+  while ((longSide >> (level + 1)) >= kMeterTexels) ++level;
+  if (level > 0) glGenerateTextureMipmap(m.radiance.id());
+  const int w = std::max(1, settings_.width >> level), h = std::max(1, settings_.height >> level);
+  std::vector<glm::vec4> rgba(static_cast<size_t>(w) * h);
+  glGetTextureImage(m.radiance.id(), level, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(glm::vec4)),
+                    rgba.data());
+  std::vector<float> nits(rgba.size());
+  for (size_t i = 0; i < rgba.size(); ++i) nits[i] = luminanceOf(glm::vec3(rgba[i]));
+  const Metering result = meterLuminance(nits, settings);
+  times_.meterMs = msSince(t0);
+  return result;
+}
+
+}  // namespace haze

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fixtures/core/result.h"
+#include "renderer/scene/exposure.h"
 #include "renderer/scene/frame_state.h"
 #include "renderer/scene/image.h"
 #include "renderer/scene/venue.h"
@@ -33,16 +34,17 @@ struct RenderSettings {
 
 struct DisplaySettings {
   // Display value = L * 2^exposureEv / kKeyNits before the tone curve: at EV 0 a surface of
-  // 50 cd/m^2 maps to 1 (a lit stage deck), so cues compare at one fixed exposure.
+  // 50 cd/m^2 maps to 1 (a lit stage deck). Always absolute: auto exposure (meter() and
+  // renderer/scene/exposure.h) is resolved by the caller into this number.
   float exposureEv = 0.0f;
-  static constexpr float kKeyNits = 50.0f;
+  static constexpr float kKeyNits = kManualKeyNits;
   // Lens glare around bright beams and lamps: the fraction of the light spread over a wide
   // kernel (0 = off, 0.02-0.1 looks like a camera). Display only; readRadiance never has it.
   float bloom = 0.0f;
 };
 
 struct PassTimes {
-  double shadowMapsMs = 0, surfacesMs = 0, beamsMs = 0, postMs = 0;
+  double shadowMapsMs = 0, surfacesMs = 0, beamsMs = 0, postMs = 0, meterMs = 0;
   int shadowMapsRendered = 0, lightMapsBaked = 0;
   uint64_t planeFragments = 0;       // footprint pixels times planes (or walks, when fused)
   uint64_t scatteringFragments = 0;  // of those, the ones that added light
@@ -66,6 +68,9 @@ class Renderer {
   // Replaces the radiometric image with one made elsewhere (the CPU reference), so it goes
   // through the same display encoding. The image must have the renderer's size.
   void setRadiance(const ImageRGB& image);
+  // The camera's light meter on the last render (docs/rendering.md, "Exposure"): the radiance's
+  // mip chain is made on the GPU and one small level (about 80 texels across) is read back.
+  Metering meter(const MeterSettings& settings = {});
   // The display encoding (8-bit sRGB, row 0 at the top) of the last render.
   std::vector<unsigned char> readDisplay(const DisplaySettings& display);
   // Draws the display encoding of the last render into the current framebuffer's viewport

@@ -19,8 +19,17 @@
 
 namespace haze {
 
+// A camera's exposure (docs/show-format.md): "auto" meters each image and ev is an offset from
+// the metered EV; "manual" is an absolute EV (0: 50 cd/m^2 maps to 1 before the tone curve).
+struct CameraExposureDef {
+  bool manual = false;
+  float ev = 0.0f;
+  bool operator==(const CameraExposureDef&) const = default;
+};
+
 struct CameraDef {
   std::string name;
+  std::optional<CameraExposureDef> exposure;  // none: the command line's or the default (auto)
   glm::vec3 position{0.0f, 2.0f, 10.0f};
   glm::vec3 target{0.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};

@@ -250,7 +250,7 @@ void readCameras(Reader& r, const json& root, Show& show) {
     const json& c = (*cams)[i];
     const std::string p = "/cameras/" + std::to_string(i);
     if (!r.isObject(c, p, "a camera")) continue;
-    r.onlyKeys(c, p, {"name", "position", "target", "up", "fov_y", "far"});
+    r.onlyKeys(c, p, {"name", "position", "target", "up", "fov_y", "far", "exposure"});
     CameraDef cam;
     r.stringMember(c, p, "name", true, "the camera's name", cam.name, true);
     r.vec3Member(c, p, "position", true, -kInf, kInf, "a position in metres", cam.position);
@@ -264,6 +264,20 @@ void readCameras(Reader& r, const json& root, Show& show) {
     if (const json* far = r.member(c, p, "far", false)) {
       double v = 0;
       if (r.number(*far, p + "/far", 0.01, kInf, "a far distance in metres", v)) cam.farM = static_cast<float>(v);
+    }
+    if (const json* e = r.member(c, p, "exposure", false); e && r.isObject(*e, p + "/exposure", "the exposure")) {
+      const std::string ep = p + "/exposure";
+      r.onlyKeys(*e, ep, {"mode", "ev"});
+      CameraExposureDef ex;
+      std::string mode;
+      if (r.stringMember(*e, ep, "mode", true, "an exposure mode", mode, true)) {
+        if (mode == "manual" || mode == "auto")
+          ex.manual = mode == "manual";
+        else
+          r.problem(ep + "/mode", "unknown exposure mode \"" + mode + "\"; expected auto or manual");
+      }
+      r.numberMember(*e, ep, "ev", false, -100.0, 100.0, "an exposure in EV", ex.ev);
+      cam.exposure = ex;
     }
     show.cameras.push_back(cam);
   }

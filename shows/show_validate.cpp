@@ -3,6 +3,7 @@
 #include "shows/show_validate.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
@@ -70,6 +71,10 @@ struct Checker {
       } else if (glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-4f) {
         problem(p + "/up", "the up vector is parallel to the viewing direction; expected one across it");
       }
+      // Ten stops either way of the meter is already a white sheet or a black frame.
+      if (c.exposure && !c.exposure->manual && std::abs(c.exposure->ev) > 10.0f)
+        problem(p + "/exposure/ev", "an auto exposure offset of " + std::to_string(c.exposure->ev) +
+                                        " EV renders white or black; expected -10..10");
     }
   }
 

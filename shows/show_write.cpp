@@ -110,6 +110,12 @@ ojson showJson(const Show& s) {
     if (c.up != glm::vec3(0.0f, 1.0f, 0.0f)) o["up"] = vec(c.up);
     o["fov_y"] = tidy(c.fovYDeg);
     if (c.farM != 100.0f) o["far"] = tidy(c.farM);
+    if (c.exposure) {
+      ojson e = ojson::object();
+      e["mode"] = c.exposure->manual ? "manual" : "auto";
+      e["ev"] = tidy(c.exposure->ev);
+      o["exposure"] = e;
+    }
     cams.push_back(o);
   }
   root["cameras"] = cams;

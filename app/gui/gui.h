@@ -16,6 +16,8 @@
 // Panels draw with ImGui and change the show only through ShowDocument (commands, undo).
 #pragma once
 
+#include <chrono>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -72,7 +74,13 @@ struct Gui {
   Tool tool = Tool::Select;
   std::string placeProfile;  // the library's selection
   Quality quality = Quality::Default;
+  // Exposure (renderer/scene/exposure.h): under auto, exposureEv is an offset from the meter and
+  // the shown EV follows the metered one smoothly; under manual it is absolute.
+  ExposureMode exposureMode = ExposureMode::Auto;
   float exposureEv = 0.0f;
+  float meteredEv = 0.0f;  // the meter on the last render
+  float shownEv = std::numeric_limits<float>::quiet_NaN();  // the absolute EV on screen; NaN: none yet
+  std::chrono::steady_clock::time_point shownAt;
   float bloom = 0.0f;  // lens glare on the display (DisplaySettings::bloom); never in the show
   double frameMs = 0.0;
   int stillFrames = 0;

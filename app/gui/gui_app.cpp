@@ -12,6 +12,7 @@
 #include <cctype>
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -43,12 +44,14 @@ struct Options {
   std::string tab;  // the show panel's tab to show first
   bool artNet = false, sacn = false;  // live DMX input from a console drives the fixtures
   std::string bind = "127.0.0.1";
+  std::optional<ExposureMode> exposureMode;
+  std::optional<float> exposureEv;
 };
 
 constexpr const char* kUsage =
     "haze open SHOW [--width W --height H] [--cue N] [--select ID]... [--tab cues|fixtures|library|patch|air]\n"
     "               [--quality draft|default|high] [--help-window] [--sacn] [--artnet] [--bind ADDR]\n"
-    "               [--screenshot OUT.png [--frames N]]\n"
+    "               [--exposure EV] [--exposure-mode auto|manual] [--screenshot OUT.png [--frames N]]\n"
     "The designer's GUI on a show (the bundled demo when none is given); docs/gui.md.\n"
     "--screenshot draws N frames (default 3) of the whole window, writes the last and exits.\n";
 
@@ -72,7 +75,8 @@ Status saveScreenshot(int width, int height, const std::string& file) {
 
 // Parses `haze open` options; nullopt: go on, else the exit status (usage printed or an error).
 std::optional<int> parseOptions(const Args& args, Options& opt) {
-  std::string quality;
+  std::string quality, exposureMode;
+  double exposure = std::nan("");
   CommandLine cli("haze open", kUsage);
   cli.text("--screenshot", opt.screenshot, "a file name")
       .flag("--artnet", opt.artNet)
@@ -93,9 +97,13 @@ std::optional<int> parseOptions(const Args& args, Options& opt) {
                 return true;
               })
       .choice("--quality", quality, {"draft", "default", "high"})
+      .number("--exposure", exposure, -100, 100, "a number of EV")
+      .choice("--exposure-mode", exposureMode, {"auto", "manual"})
       .positional(opt.show, "show", false);
   if (auto done = cli.parse(args)) return done;
   if (!quality.empty()) opt.quality = *parseQuality(quality);
+  opt.exposureMode = parseExposureMode(exposureMode);
+  if (!std::isnan(exposure)) opt.exposureEv = static_cast<float>(exposure);
   if (opt.show.empty()) opt.show = HAZE_DEMO_SHOW;
   if (!opt.screenshot.empty() && opt.frames <= 0) opt.frames = 3;
   return std::nullopt;
@@ -115,6 +123,11 @@ Status applyOptions(Gui& gui, const Options& opt) {
     applyClickToSelection(gui.doc->selection, id, false, true);
   }
   if (opt.quality) gui.quality = *opt.quality;
+  // The show's first camera may carry an exposure; the command line wins, as in haze render.
+  const ExposureChoice exposure = exposureChoiceFor(
+      gui.doc->show(), {.exposureMode = opt.exposureMode, .exposureEv = opt.exposureEv});
+  gui.exposureMode = exposure.mode;
+  gui.exposureEv = exposure.ev;
   gui.showHelp = opt.help;
   if (!opt.tab.empty()) {
     const std::string names[] = {"Cues", "Fixtures", "Library", "Patch", "Air"};
@@ -253,9 +266,17 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
       ++gui.stillFrames;
     }
   }
-  r->drawDisplay({.exposureEv = gui.exposureEv, .bloom = gui.bloom}, 0, vx, vy, vw, vh);
+  // The meter reads only new renders; the shown EV glides towards it (no flicker in a fade) and
+  // the window keeps drawing until it has arrived.
+  if (!settled && gui.exposureMode == ExposureMode::Auto) gui.meteredEv = r->meter().ev;
+  const float target = exposureEvFor({.mode = gui.exposureMode, .ev = gui.exposureEv}, gui.meteredEv);
+  const auto now = std::chrono::steady_clock::now();
+  const float dt = std::chrono::duration<float>(now - gui.shownAt).count();
+  gui.shownEv = gui.exposureMode == ExposureMode::Auto ? adaptEv(gui.shownEv, target, dt) : target;
+  gui.shownAt = now;
+  r->drawDisplay({.exposureEv = gui.shownEv, .bloom = gui.bloom}, 0, vx, vy, vw, vh);
   if (!settled) gui.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  return settled;
+  return settled && std::abs(gui.shownEv - target) < 0.01f;
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // The atmosphere tab: scattering, absorption, phase function (and g for Henyey-Greenstein),
 // ambient light (docs/physics.md), each a setAtmosphere command (a drag is one undo step); and the
 // view's render quality, exposure and bloom, which are not part of the show.
+#include <cmath>
+
 #include "app/gui/gui.h"
 #include "shows/dmx/udp_receiver.h"
 
@@ -51,8 +53,24 @@ void drawAtmosphereTab(Gui& gui) {
   int q = std::min(static_cast<int>(gui.quality), 2);
   ImGui::SetNextItemWidth(110);
   if (ImGui::Combo("Quality", &q, names, 3)) gui.quality = static_cast<Quality>(q);
+  int mode = gui.exposureMode == ExposureMode::Auto ? 0 : 1;
+  const char* modes[] = {"Auto", "Manual"};
   ImGui::SetNextItemWidth(110);
-  ImGui::SliderFloat("Exposure EV", &gui.exposureEv, -6.0f, 6.0f, "%.1f");
+  if (ImGui::Combo("Exposure", &mode, modes, 2)) {
+    // Switching keeps the picture: the EV on screen becomes the manual EV, or the offset from the meter.
+    const bool toManual = mode == 1;
+    if (toManual != (gui.exposureMode == ExposureMode::Manual)) {
+      const float shown = std::isfinite(gui.shownEv) ? gui.shownEv : gui.exposureEv;
+      gui.exposureEv = toManual ? shown : shown - gui.meteredEv;
+      gui.exposureMode = toManual ? ExposureMode::Manual : ExposureMode::Auto;
+    }
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Auto meters the image like a camera (docs/rendering.md); manual: EV 0 maps 50 cd/m^2 to 1");
+  ImGui::SetNextItemWidth(110);
+  const bool isAuto = gui.exposureMode == ExposureMode::Auto;
+  ImGui::SliderFloat(isAuto ? "Offset EV" : "Exposure EV", &gui.exposureEv, isAuto ? -6.0f : -16.0f, 6.0f, "%.1f");
+  if (isAuto) ImGui::Text("Metered %.1f EV, shown %.1f EV", gui.meteredEv, std::isfinite(gui.shownEv) ? gui.shownEv : 0.0f);
   ImGui::SetNextItemWidth(110);
   ImGui::SliderFloat("Bloom", &gui.bloom, 0.0f, 0.3f, "%.2f");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Lens glare around bright beams: display only, not in PFMs");

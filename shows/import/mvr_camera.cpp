@@ -68,6 +68,8 @@ CameraDef mvrOverviewCamera(const std::vector<glm::vec3>& rigPointsM, const Bvh&
   const float fitDeg = glm::degrees(2.0f * std::atan(0.5f * 0.6f * extent / bestDistanceM));
   cam.fovYDeg = std::round(std::clamp(fitDeg, 40.0f, 75.0f));
   cam.farM = std::max(100.0f, 4.0f * extent);
+  // A rig of any size and power: metered, so the first render is neither white nor black.
+  cam.exposure = CameraExposureDef{.manual = false, .ev = 0.0f};
   return cam;
 }
 

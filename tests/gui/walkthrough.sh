@@ -5,7 +5,8 @@
 # the sphere (focus to point); Ctrl+R records cue 6; Ctrl+Shift+S saves it under a new name;
 # Ctrl+Z / Ctrl+Shift+Z undo and redo (the "*" comes and goes); Ctrl+Q exits cleanly. Then the
 # saved show is reopened: cue 6 holds the new fixture at full, and its beam lights the sphere
-# (the window at cue 6 is brighter there than the demo at cue 5, which cue 6 tracks from).
+# (the window at cue 6 is brighter there than the demo at cue 5, which cue 6 tracks from; both at
+# the manual exposure, so the meter does not even them out).
 set -uo pipefail
 haze=$1; root=$2
 . "$root/tests/gui/xvfb.bash"
@@ -52,8 +53,9 @@ check "Ctrl+Q exits cleanly (status $rc)" '[ "$rc" = 0 ]'
 level=$("$haze" state "$saved" --cue 6 --json 2>&1 |
   awk '/"305": \{/ { f = 1 } f && /"intensity"/ { gsub(/[^0-9.]/, "", $2); print $2; exit }')
 check "reopened, cue 6 has fixture 305 at $level" 'awk -v l="$level" "BEGIN { exit !(l > 0.95) }"'
-"$haze" open "$saved" --width 640 --height 360 --quality draft --cue 6 --frames 3 --screenshot "$tmp/reopened.png" 2>/dev/null
-"$haze" open "$root/examples/demo/demo.haze.json" --width 640 --height 360 --quality draft --cue 5 --frames 3 \
+"$haze" open "$saved" --width 640 --height 360 --quality draft --exposure-mode manual --cue 6 --frames 3 --screenshot "$tmp/reopened.png" 2>/dev/null
+"$haze" open "$root/examples/demo/demo.haze.json" --width 640 --height 360 --quality draft --exposure-mode manual \
+  --cue 5 --frames 3 \
   --screenshot "$tmp/cue5.png" 2>/dev/null
 mean() { convert "$tmp/$1.png" -crop 50x40+333+265 +repage -colorspace Gray -format "%[fx:mean]" info:; }
 lit=$(mean reopened); dark=$(mean cue5)
