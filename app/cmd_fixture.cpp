@@ -20,7 +20,8 @@ void printText(const nlohmann::ordered_json& f) {
             << "  beam " << num("beam_angle") << " deg (C0 " << num("beam_angle_c0") << ", C90 " << num("beam_angle_c90") << ")\n"
             << "  field " << num("field_angle") << " deg (C0 " << num("field_angle_c0") << ", C90 " << num("field_angle_c90") << ")\n"
             << "  symmetry " << f["symmetry"].get<std::string>() << ", grid " << f["grid"]["gamma"].get<int>() << " gamma x "
-            << f["grid"]["c"].get<int>() << " C\n";
+            << f["grid"]["c"].get<int>() << " C\n"
+            << "  lens radius " << num("lens_radius") << " m (" << f["lens_radius_source"].get<std::string>() << ")\n";
 }
 
 }  // namespace

@@ -143,6 +143,9 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
     g.zb = glm::vec4(b.pose.zb, static_cast<float>(i));
     g.color = glm::vec4(b.optics.color * b.optics.dimmer, std::tan(cutoff));
     g.shadowViewProj = viewProj;
+    // A radius of 0 draws no disc (a degenerate quad): tests use it to see the in-scattering alone.
+    const float rl = std::max(b.optics.lensRadiusM, 0.0f);
+    g.lens = glm::vec4(rl, rl > 0.0f ? 1.0f / (3.14159265f * rl * rl) : 0.0f, 0.0f, 0.0f);
   }
   if (n > 0)
     glNamedBufferSubData(ssbo_.id(), 0, static_cast<GLsizeiptr>(sizeof(GpuBeam) * n), gpuBeams_.data());

@@ -35,7 +35,7 @@ Status checkSize(int width, int height) {
 struct Renderer::Impl {
   GpuVenue venue;
   BeamResources beams;
-  gl::Program shadowProgram, surfaceProgram, postProgram, bloomPostProgram;
+  gl::Program shadowProgram, surfaceProgram, lensProgram, postProgram, bloomPostProgram;
   gl::Texture radiance, depth, display;
   gl::Sampler mipSampler{"radiance_mips"};  // for bloom: trilinear over the radiance's mip levels
   gl::Framebuffer sceneFbo{"scene_fbo"}, displayFbo{"display_fbo"};
@@ -90,6 +90,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   if (!shadow) return shadow.error();
   auto surface = gl::buildProgram({.label = "surface", .vertex = "venue.vert.glsl", .fragment = "surface.frag.glsl"});
   if (!surface) return surface.error();
+  auto lens = gl::buildProgram({.label = "lens", .vertex = "lens.vert.glsl", .fragment = "lens.frag.glsl"});
+  if (!lens) return lens.error();
+  impl->lensProgram = std::move(*lens);
   auto post = gl::buildProgram({.label = "post", .vertex = "fullscreen.vert.glsl", .fragment = "post.frag.glsl"});
   if (!post) return post.error();
   auto bloomPost = gl::buildProgram(
@@ -195,6 +198,18 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   }
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
+
+  // The lens discs, after the venue so that they hide what lies behind them and their depth
+  // ends the beam pass's eye rays there (docs/rendering.md, "Lenses"). A few pixels each.
+  if (m.beams.count() > 0) {
+    const GLuint lensProg = m.lensProgram.id();
+    glUseProgram(lensProg);
+    glProgramUniformMatrix4fv(lensProg, HAZE_LOC_LENS_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
+    glProgramUniform1f(lensProg, HAZE_LOC_LENS_SIGMA_T, sigmaT);
+    glProgramUniform3fv(lensProg, HAZE_LOC_CAMERA_EYE, 1, glm::value_ptr(frame.camera.position));
+    glBindVertexArray(m.emptyVao.id());
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, m.beams.count());
+  }
   glFinish();
   times_.surfacesMs = msSince(t0);
 

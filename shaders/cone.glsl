@@ -8,7 +8,14 @@ bool insideCone(vec3 x, vec3 axis, float cos2) {
 }
 
 vec2 coneInterval(vec3 origin, vec3 dir, vec3 apex, vec3 axis, float cos2, float sMin, float sMax) {
-  vec3 o = origin - apex;
+  // Solve about the ray's closest approach to the apex, not about its origin: a ray from
+  // metres away that passes millimetres from a lens has two roots millimetres apart, which
+  // float loses in qb^2 - 4 qa qc (the lamp's own pixel came out black). Shifted, the
+  // coefficients are of the size of that distance and the roots keep their precision.
+  float sc = -dot(origin - apex, dir) / dot(dir, dir);
+  vec3 o = origin + sc * dir - apex;
+  sMin -= sc;
+  sMax -= sc;
   float da = dot(dir, axis), oa = dot(o, axis);
   float qa = da * da - cos2 * dot(dir, dir);
   float qb = 2.0 * (da * oa - cos2 * dot(o, dir));
@@ -43,5 +50,5 @@ vec2 coneInterval(vec3 origin, vec3 dir, vec3 apex, vec3 axis, float cos2, float
     }
     prev = max(prev, next);
   }
-  return any ? vec2(s0, s1) : vec2(0.0);
+  return any ? vec2(s0, s1) + sc : vec2(0.0);
 }

@@ -84,6 +84,10 @@
 #define HAZE_LOC_PLANES_POLYGON_NDC 30
 #define HAZE_FOOTPRINT_MAX_VERTICES 24
 
+// lens.vert.glsl / lens.frag.glsl (the lens discs; with camera.glsl)
+#define HAZE_LOC_LENS_VIEW_PROJ 0
+#define HAZE_LOC_LENS_SIGMA_T 1
+
 // composite.frag.glsl
 #define HAZE_LOC_COMPOSITE_SCALE 0
 #define HAZE_LOC_COMPOSITE_UPSAMPLE 1
@@ -128,6 +132,7 @@ struct Beam {
   vec4 zb;        // xyz beam axis, w = shadow-map layer
   vec4 color;     // rgb = dimmer * colour filter, w = tan(cutoff)
   mat4 shadowViewProj;
+  vec4 lens;      // x = r_lens, y = 1 / (pi r_lens^2), zw unused
 };
 
 // The std430 offsets of struct Beam's fields: the C++ compiler lays out glm types by its own
@@ -138,7 +143,8 @@ struct Beam {
 #define HAZE_BEAM_OFFSET_ZB 48
 #define HAZE_BEAM_OFFSET_COLOR 64
 #define HAZE_BEAM_OFFSET_SHADOW_VIEW_PROJ 80
-#define HAZE_BEAM_SIZE 144
+#define HAZE_BEAM_OFFSET_LENS 144
+#define HAZE_BEAM_SIZE 160
 
 #ifdef __cplusplus
 static_assert(offsetof(Beam, lensPos) == HAZE_BEAM_OFFSET_LENS_POS);
@@ -147,6 +153,7 @@ static_assert(offsetof(Beam, yb) == HAZE_BEAM_OFFSET_YB);
 static_assert(offsetof(Beam, zb) == HAZE_BEAM_OFFSET_ZB);
 static_assert(offsetof(Beam, color) == HAZE_BEAM_OFFSET_COLOR);
 static_assert(offsetof(Beam, shadowViewProj) == HAZE_BEAM_OFFSET_SHADOW_VIEW_PROJ);
+static_assert(offsetof(Beam, lens) == HAZE_BEAM_OFFSET_LENS);
 static_assert(sizeof(Beam) == HAZE_BEAM_SIZE);
 }  // namespace haze::gpu
 #endif

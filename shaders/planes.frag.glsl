@@ -46,6 +46,27 @@ void main() {
   int k1 = int(floor((seg.y - zBase) / dz - xi));
   vec3 L = vec3(0.0);
   BeamRay ray = beamRay(b, v, len);
+  // Where the chord passes the lens closer than one step, 1/r^2 peaks within one step and
+  // equal depth steps miss it (the lamp's own pixel came out black): there the chord is
+  // walked in equal steps of the angle phi seen from the lens instead, as the reference does,
+  // t = t_c + D tan(phi), dt = D / cos^2(phi) dphi, which follows the peak exactly.
+  float tc = -dot(ray.d0, v) / len;                     // metres along the ray to the closest approach
+  float D = max(length(ray.d0 + (tc / len) * v), 1e-6);  // its distance from the lens
+  float t0 = seg.x * len, t1 = seg.y * len;
+  float rMin = tc < t0 ? length(ray.d0 + seg.x * v) : tc > t1 ? length(ray.d0 + seg.y * v) : D;
+  if (rMin < dz * len) {
+    int n = max(k1 - k0 + 1, uMinSamples);
+    float phi0 = atan(t0 - tc, D), phi1 = atan(t1 - tc, D);
+    float dphi = (phi1 - phi0) / float(n);
+    for (int k = 0; k < n; ++k) {
+      float phi = phi0 + (float(k) + xi) * dphi;
+      float c = cos(phi);
+      L += scatterAt(b, ray, (tc + D * tan(phi)) / len) * (D / (c * c));
+    }
+    if (L == vec3(0.0)) discard;
+    outScatter = vec4(L * dphi, 0.0);
+    return;
+  }
   for (int k = k0; k <= k1; ++k) L += scatterAt(b, ray, zBase + (float(k) + xi) * dz);
   if (L == vec3(0.0)) discard;
   outScatter = vec4(L * dz * len, 0.0);

@@ -198,6 +198,46 @@ glm::vec3 surfaceRadiance(const Bvh& bvh, const FrameState& frame,
          venue.emission(*s.primitive, s.uv);
 }
 
+struct LensHit {
+  const BeamState* beam = nullptr;
+  float tM = 0.0f;
+};
+
+// The nearest lens disc on the ray before tMax (docs/physics.md, "The lens"). Every beam has
+// one, lit or not: a dark lens is still an opaque black disc.
+LensHit closestLens(const FrameState& frame, const glm::vec3& e, const glm::vec3& v, float tMax) {
+  LensHit best;
+  for (const BeamState& b : frame.beams) {
+    const float r = b.optics.lensRadiusM;
+    if (!(r > 0.0f)) continue;
+    const glm::vec3& z = b.pose.zb;
+    const double dv = glm::dot(v, z);
+    if (dv == 0.0) continue;  // along the disc's plane: the rim, which has no width
+    const glm::vec3 lens = b.pose.lensPosition;
+    const double t = glm::dot(glm::dvec3(lens) - glm::dvec3(e), glm::dvec3(z)) / dv;
+    if (!(t > 0.0) || !(t < tMax) || (best.beam && !(t < best.tM))) continue;
+    const glm::dvec3 x = glm::dvec3(e) + t * glm::dvec3(v) - glm::dvec3(lens);
+    if (glm::dot(x, x) > double(r) * r) continue;
+    best = {&b, static_cast<float>(t)};
+  }
+  return best;
+}
+
+}  // namespace
+
+glm::vec3 lensLuminance(const BeamState& beam, const glm::vec3& eye) {
+  const glm::vec3 toEye = eye - beam.pose.lensPosition;
+  const float d = glm::length(toEye);
+  if (!(d > 0.0f)) return glm::vec3(0.0f);
+  const float cosE = glm::dot(toEye / d, beam.pose.zb);
+  if (!(cosE > 0.0f)) return glm::vec3(0.0f);  // the back of the lens is black
+  const float r = beam.optics.lensRadiusM;
+  if (!(r > 0.0f) || !beam.optics.distribution) return glm::vec3(0.0f);
+  return beamIntensityTowards(beam, eye) / (kPi * r * r * cosE);
+}
+
+namespace {
+
 PixelRadiance radiance(const Bvh& bvh, const FrameState& frame,
                        const std::vector<ActiveBeam>& beams, const glm::vec3& e,
                        const glm::vec3& v, const ReferenceOptions& o) {
@@ -206,8 +246,16 @@ PixelRadiance radiance(const Bvh& bvh, const FrameState& frame,
   const RayHit hit = bvh.closestHit(e, v, 0.0f, far);
   out.hitSurface = hit.hit();
   out.depthM = out.hitSurface ? hit.tM : far;
+  const LensHit lens = closestLens(frame, e, v, out.depthM);
+  if (lens.beam) {
+    out.hitSurface = false;
+    out.hitLens = true;
+    out.depthM = lens.tM;
+  }
   const float transmit = std::exp(-frame.medium.extinction() * out.depthM);
-  if (out.hitSurface) {
+  if (out.hitLens) {
+    out.surface = lensLuminance(*lens.beam, e) * transmit;
+  } else if (out.hitSurface) {
     out.surface = surfaceRadiance(bvh, frame, beams, hit, v, o) * transmit;
   } else {
     out.background = frame.medium.background * transmit;

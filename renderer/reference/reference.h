@@ -42,8 +42,13 @@ struct PixelRadiance {
   glm::vec3 background{0.0f};   // background * exp(-sigma_t T) where no surface is hit
   float depthM = 0.0f;          // T
   bool hitSurface = false;
+  bool hitLens = false;         // T ends on a lens disc (front: surface is its L_lens, back: 0)
   glm::vec3 total() const { return surface + inScattered + background; }
 };
+
+// L_lens of docs/physics.md ("The lens") seen from eye, before attenuation: I_eff towards the
+// eye over the disc's projected area, 0 from behind.
+glm::vec3 lensLuminance(const BeamState& beam, const glm::vec3& eye);
 
 // The unit direction of pixel (i, j)'s ray through its centre, j = 0 the top row
 // (docs/physics.md's pinhole camera). Fractional pixel coordinates are allowed: (i, j) = (0, 0) is

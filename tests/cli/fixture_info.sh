@@ -56,7 +56,8 @@ check "$tmp/par.json" "$keys" \
   "f.modes[0].channels.length === 6 && f.modes[0].channels[0].offset === 1 && f.modes[0].channels[0].attribute === 'intensity'" \
   "f.modes[0].channels[4].attribute === 'zoom' && f.modes[0].channels[4].range[0] === 10 && f.modes[0].channels[4].range[1] === 50" \
   "f.modes[0].channels[5].name === 'Strobe' && f.modes[0].channels[5].attribute === 'none'" \
-  "f.lumens > 500 && f.lumens < 5000"
+  "f.lumens > 500 && f.lumens < 5000" \
+  "f.lens_radius === 0.05 && f.lens_radius_source === 'default'"
 
 # SOURCES.md: Ansorg stage spot, axial, 37 gammas, peak ~42,000 cd, FWHM ~10 degrees.
 check "$data/photometry/ies/hydraapi/ies_34.ies" "$keys" \
@@ -67,11 +68,17 @@ check "$data/photometry/ies/hydraapi/ies_34.ies" "$keys" \
 # SOURCES.md: Regent NEO U LED12800, no symmetry, 24 C x 37 gamma; 12,800 lm luminaire.
 check "$data/photometry/ldt/eulumdat-py/sample3.ldt" "$keys" \
   "f.manufacturer === 'Regent'" "f.symmetry === 'none'" "f.grid.gamma === 37 && f.grid.c === 24" \
-  "Math.abs(f.lumens - 12800) < 128"
+  "Math.abs(f.lumens - 12800) < 128" \
+  "Math.abs(f.lens_radius - 0.2437) < 1e-3 && f.lens_radius_source === 'ldt'"  # 594 x 314 mm, the same area
 
 # GDTF goes through the same loadProfile (fixtures/gdtf.h): facts come out with the same keys.
 check "$data/gdtf/BlenderDMX@BeskydBeam@version10.gdtf" "$keys" \
-  "f.name === 'BeskydBeam'" "f.manufacturer === 'BlenderDMX'" "f.peak_candela > 0 && f.lumens > 0"
+  "f.name === 'BeskydBeam'" "f.manufacturer === 'BlenderDMX'" "f.peak_candela > 0 && f.lumens > 0" \
+  "f.lens_radius === 0.08 && f.lens_radius_source === 'gdtf'"
+
+# A native lens_radius wins over the default.
+sed 's/"zoom"/"lens_radius": 0.07, "zoom"/' "$tmp/par.json" > "$tmp/par_lens.json"
+check "$tmp/par_lens.json" "f.lens_radius === 0.07 && f.lens_radius_source === 'profile'"
 
 # Bad input: one line on stderr naming the file and the line, exit status 1, nothing on stdout.
 printf 'IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 3 1 2 2 0 0 0\n1 1 0\n0 45 90\n0\n10 5 0\n' > "$tmp/typeb.ies"

@@ -16,6 +16,8 @@ TEST_F(BloomTest, SpreadsLightOnTheDisplayOnly) {
   frame.camera.target = glm::vec3(0.0f);  // straight down onto the pool
   frame.camera.fovYDeg = 40.0f;
   frame.beams.push_back(makeBeam({0.0f, 6.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 8.0f, 10.0f, 400000.0f));
+  // The lamp hangs between the camera and the pool; its (black) back would hide the pool's centre.
+  frame.beams.back().optics.lensRadiusM = 0.0f;
   auto r = Renderer::create(venue, {.width = 128, .height = 128});
   ASSERT_TRUE(r.ok()) << r.error().str();
   (*r)->render(frame);
