@@ -16,6 +16,7 @@ bool acceptProfileJson(const uint8_t* data, size_t size);
 bool acceptShow(const uint8_t* data, size_t size);
 bool acceptVenue(const uint8_t* data, size_t size);
 bool acceptGdtf(const uint8_t* data, size_t size);
+bool acceptGdtfXml(const uint8_t* data, size_t size);  // description.xml alone, zipped here
 bool acceptMvr(const uint8_t* data, size_t size);
 bool acceptArtNet(const uint8_t* data, size_t size);
 bool acceptSacn(const uint8_t* data, size_t size);

@@ -179,6 +179,11 @@ put('gdtf', 'ok-latin1-names.gdtf', zipped([('description.xml', head_xml('B\xfch
                                             ('wheels/dots.png', png)]))
 put('gdtf', 'bad-no-description.gdtf', zipped([('readme.txt', 'no description')]))
 put('gdtf', 'bad-not-zip.gdtf', 'this is not a zip archive')
+# gdtf_xml: description.xml alone (the harness zips it with wheels/dots.png).
+put('gdtf_xml', 'ok-head.xml', head_xml())
+put('gdtf_xml', 'ok-latin1-names.xml', head_xml('B\xfchne', 'Kreis\xe9').encode('latin-1'))
+put('gdtf_xml', 'bad-no-fixture-type.xml', '<?xml version="1.0" encoding="UTF-8"?>\n<GDTF DataVersion="1.2"></GDTF>\n')
+put('gdtf_xml', 'bad-beam-angle.xml', head_xml().replace('BeamAngle="20"', 'BeamAngle="abc"'))
 
 # ---- MVR ----
 scene = '''<?xml version="1.0"?>

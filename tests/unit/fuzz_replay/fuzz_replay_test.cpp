@@ -131,6 +131,7 @@ TEST(FuzzReplay, ProfileJson) { replay("profile_json", fuzz::acceptProfileJson, 
 TEST(FuzzReplay, Show) { replay("show", fuzz::acceptShow, 2000, 4); }
 TEST(FuzzReplay, Venue) { replay("venue", fuzz::acceptVenue, 3000, 5); }
 TEST(FuzzReplay, Gdtf) { replay("gdtf", fuzz::acceptGdtf, 1000, 6); }
+TEST(FuzzReplay, GdtfXml) { replay("gdtf_xml", fuzz::acceptGdtfXml, 1500, 10); }
 TEST(FuzzReplay, Mvr) { replay("mvr", fuzz::acceptMvr, 300, 7); }
 TEST(FuzzReplay, ArtNet) { replay("artnet", fuzz::acceptArtNet, 5000, 8); }
 TEST(FuzzReplay, Sacn) { replay("sacn", fuzz::acceptSacn, 5000, 9); }
