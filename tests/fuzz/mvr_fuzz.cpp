@@ -11,13 +11,25 @@
 #include "shows/import/mvr_import.h"
 
 namespace haze::fuzz {
+namespace {
+
+// One folder per process, removed at exit: a passing run leaves nothing behind.
+struct ScratchDir {
+  std::filesystem::path path;
+  ScratchDir() : path(std::filesystem::temp_directory_path() / ("haze-fuzz-mvr-" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+};
+
+}  // namespace
 
 bool acceptMvr(const uint8_t* data, size_t size) {
-  static const std::filesystem::path dir = [] {
-    auto d = std::filesystem::temp_directory_path() / ("haze-fuzz-mvr-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(d);
-    return d;
-  }();
+  static const ScratchDir scratch;
+  const std::filesystem::path& dir = scratch.path;
   const auto in = dir / "in.mvr";
   {
     std::ofstream out(in, std::ios::binary | std::ios::trunc);
