@@ -244,7 +244,8 @@ struct Loader {
     }
     Primitive out;
     out.name = name;
-    out.material = p.material >= 0 && p.material + 1 < static_cast<int>(venue.materials.size())
+    // Compared without the +1 so that material = INT_MAX from a file cannot overflow.
+    out.material = p.material >= 0 && p.material < static_cast<int>(venue.materials.size()) - 1
                        ? p.material + 1 : 0;
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
     const size_t n = positions.count();

@@ -1,7 +1,6 @@
-#!/usr/bin/env python3
 # Writes the fuzz seed corpus (tests/fuzz/corpus/<parser>/): small hand-made files, ok-* valid
-# and bad-* broken in one known way each. Run from anywhere; the output is deterministic (zip
-# entries carry a fixed date), so rerunning changes nothing unless this script changed.
+# and bad-* broken in one known way each. Run with python3 from anywhere; the output is
+# deterministic (zip entries carry a fixed date): rerunning changes nothing unless this did.
 import base64, json, os, struct, zipfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))

@@ -179,6 +179,15 @@ TEST(VenueHostile, TrianglesBeyondTheLimitAreRefused) {
   EXPECT_EQ(ok->triangleCount(), 5u);
 }
 
+TEST(VenueHostile, MaterialIndexAtIntMaxFallsBackToTheDefault) {
+  Tri t;
+  t.doc["meshes"][0]["primitives"][0]["material"] = std::numeric_limits<int>::max();
+  const std::string text = t.text();
+  auto v = loadVenueFromMemory(std::span<const uint8_t>(reinterpret_cast<const uint8_t*>(text.data()), text.size()), "mat");
+  ASSERT_TRUE(v.ok()) << v.error().str();
+  EXPECT_EQ(v->primitives[0].material, 0);
+}
+
 TEST(VenueHostile, InMemoryVenueDoesNotReadFiles) {
   Tri t;
   json d = t.doc;
