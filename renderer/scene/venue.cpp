@@ -7,12 +7,14 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
+#include <stb_image.h>
 #include <tiny_gltf.h>
 
 namespace haze {
@@ -41,47 +43,75 @@ glm::mat4 nodeMatrix(const tinygltf::Node& n) {
   return m;
 }
 
+// Overflow-checked size arithmetic: every offset, count and stride below comes from the file,
+// and a sum that wraps past 2^64 would pass any bounds check.
+bool addOk(size_t a, size_t b, size_t& out) { return !__builtin_add_overflow(a, b, &out); }
+bool mulOk(size_t a, size_t b, size_t& out) { return !__builtin_mul_overflow(a, b, &out); }
+
 // Reads accessor element i as up to 4 floats (normalised integers are mapped to [0, 1]).
+// Construction checks that every element lies inside its buffer view and the view inside its
+// buffer; error() says which bound failed.
 class AccessorReader {
  public:
   AccessorReader(const tinygltf::Model& model, int index) {
-    if (index < 0 || index >= static_cast<int>(model.accessors.size())) return;
-    acc_ = &model.accessors[index];
-    if (acc_->bufferView < 0 || acc_->bufferView >= static_cast<int>(model.bufferViews.size())) {
-      acc_ = nullptr;
+    const std::string at = "accessors[" + std::to_string(index) + "]";
+    if (index < 0 || index >= static_cast<int>(model.accessors.size())) {
+      error_ = at + " does not exist (" + std::to_string(model.accessors.size()) + " accessors)";
       return;
     }
-    const tinygltf::BufferView& view = model.bufferViews[acc_->bufferView];
+    const tinygltf::Accessor& acc = model.accessors[static_cast<size_t>(index)];
+    if (acc.bufferView < 0 || acc.bufferView >= static_cast<int>(model.bufferViews.size())) {
+      error_ = at + ": bufferView " + std::to_string(acc.bufferView) + " does not exist";
+      return;
+    }
+    const std::string viewAt = "bufferViews[" + std::to_string(acc.bufferView) + "]";
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(acc.bufferView)];
     if (view.buffer < 0 || view.buffer >= static_cast<int>(model.buffers.size())) {
-      acc_ = nullptr;
+      error_ = viewAt + ": buffer " + std::to_string(view.buffer) + " does not exist";
       return;
     }
-    const tinygltf::Buffer& buf = model.buffers[view.buffer];
-    components_ = tinygltf::GetNumComponentsInType(acc_->type);
-    componentBytes_ = tinygltf::GetComponentSizeInBytes(acc_->componentType);
+    const tinygltf::Buffer& buf = model.buffers[static_cast<size_t>(view.buffer)];
+    size_t viewEnd = 0;
+    if (!addOk(view.byteOffset, view.byteLength, viewEnd) || viewEnd > buf.data.size()) {
+      error_ = viewAt + ": byteOffset + byteLength exceeds buffers[" + std::to_string(view.buffer) + "] (" +
+               std::to_string(buf.data.size()) + " bytes)";
+      return;
+    }
+    components_ = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(acc.type));
+    componentBytes_ = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(acc.componentType));
     if (components_ <= 0 || componentBytes_ <= 0) {
-      acc_ = nullptr;
+      error_ = at + ": unknown type or componentType";
       return;
     }
-    stride_ = acc_->ByteStride(view);
-    const size_t start = view.byteOffset + acc_->byteOffset;
-    const size_t elemBytes = static_cast<size_t>(components_) * componentBytes_;
-    // Bounds: the last element must end inside the view and the buffer.
-    if (stride_ <= 0 || acc_->count == 0 ||
-        acc_->byteOffset + (acc_->count - 1) * static_cast<size_t>(stride_) + elemBytes > view.byteLength ||
-        view.byteOffset + view.byteLength > buf.data.size()) {
-      acc_ = nullptr;
+    const size_t elemBytes = static_cast<size_t>(components_) * static_cast<size_t>(componentBytes_);
+    // glTF: byteStride 0 (or absent) means tightly packed; tinygltf's ByteStride() gives -1 for
+    // a stride it deems invalid, which would read as a huge size_t here.
+    const size_t stride = view.byteStride == 0 ? elemBytes : view.byteStride;
+    if (acc.count == 0) {
+      error_ = at + ": count is 0";
       return;
     }
-    data_ = buf.data.data() + start;
+    // The last element must end inside the view: byteOffset + (count - 1) * stride + elemBytes.
+    size_t span = 0, end = 0;
+    if (!mulOk(acc.count - 1, stride, span) || !addOk(span, acc.byteOffset, end) || !addOk(end, elemBytes, end) ||
+        end > view.byteLength) {
+      error_ = at + ": byteOffset + count * stride exceeds " + viewAt + " (" + std::to_string(view.byteLength) +
+               " bytes)";
+      return;
+    }
+    acc_ = &acc;
+    stride_ = stride;
+    count_ = acc.count;
+    data_ = buf.data.data() + view.byteOffset + acc.byteOffset;
   }
 
   bool ok() const { return acc_ != nullptr; }
-  size_t count() const { return acc_ ? acc_->count : 0; }
+  const std::string& error() const { return error_; }
+  size_t count() const { return count_; }
   int components() const { return components_; }
 
   float component(size_t i, int c) const {
-    const unsigned char* p = data_ + i * static_cast<size_t>(stride_) + c * componentBytes_;
+    const unsigned char* p = data_ + i * stride_ + static_cast<size_t>(c * componentBytes_);
     switch (acc_->componentType) {
       case TINYGLTF_COMPONENT_TYPE_FLOAT: { float f; std::memcpy(&f, p, 4); return f; }
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return acc_->normalized ? *p / 255.0f : *p;
@@ -100,7 +130,7 @@ class AccessorReader {
     }
   }
   uint32_t index(size_t i) const {
-    const unsigned char* p = data_ + i * static_cast<size_t>(stride_);
+    const unsigned char* p = data_ + i * stride_;
     switch (acc_->componentType) {
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return v; }
@@ -114,15 +144,37 @@ class AccessorReader {
   const unsigned char* data_ = nullptr;
   int components_ = 0;
   int componentBytes_ = 0;
-  int stride_ = 0;
+  size_t stride_ = 0;
+  size_t count_ = 0;
+  std::string error_;
 };
 
 struct Loader {
   const tinygltf::Model& model;
   Venue& venue;
-  std::string fileName;
+  const VenueLimits& limits;
   std::string error;
   int depth = 0;
+  size_t nodeVisits = 0;
+  size_t vertices = 0;   // stored so far, over all primitives
+  size_t triangles = 0;
+
+  // Claims room for a primitive before it is allocated.
+  bool reserve(const std::string& name, size_t addVertices, size_t addTriangles) {
+    if (addVertices > limits.maxVertices - vertices) {
+      error = "mesh '" + name + "': the venue would hold more than " + std::to_string(limits.maxVertices) +
+              " vertices (the limit)";
+      return false;
+    }
+    if (addTriangles > limits.maxTriangles - triangles) {
+      error = "mesh '" + name + "': the venue would hold more than " + std::to_string(limits.maxTriangles) +
+              " triangles (the limit)";
+      return false;
+    }
+    vertices += addVertices;
+    triangles += addTriangles;
+    return true;
+  }
 
   int texture(int gltfTexture, bool srgb) {
     if (gltfTexture < 0 || gltfTexture >= static_cast<int>(model.textures.size())) return -1;
@@ -136,10 +188,12 @@ struct Loader {
     t.width = img.width;
     t.height = img.height;
     t.srgb = srgb;
-    const size_t n = static_cast<size_t>(img.width) * img.height;
+    const size_t n = static_cast<size_t>(img.width) * static_cast<size_t>(img.height);
     const int comps = img.component;
     const int bytesPer = img.bits == 16 ? 2 : 1;
-    if (comps < 1 || comps > 4 || img.image.size() < n * comps * bytesPer) return -1;
+    if (n > kMaxVenueTexturePixels || comps < 1 || comps > 4 ||
+        img.image.size() < n * static_cast<size_t>(comps * bytesPer))
+      return -1;
     t.rgba8.resize(n * 4);
     for (size_t i = 0; i < n; ++i) {
       unsigned char px[4] = {0, 0, 0, 255};
@@ -180,20 +234,45 @@ struct Loader {
     auto pos = p.attributes.find("POSITION");
     if (pos == p.attributes.end()) return true;
     AccessorReader positions(model, pos->second);
-    if (!positions.ok() || positions.components() != 3) {
-      error = "mesh '" + name + "': POSITION accessor is out of its buffer or not VEC3";
+    if (!positions.ok()) {
+      error = "mesh '" + name + "' POSITION: " + positions.error();
+      return false;
+    }
+    if (positions.components() != 3) {
+      error = "mesh '" + name + "' POSITION: accessors[" + std::to_string(pos->second) + "] is not VEC3";
       return false;
     }
     Primitive out;
     out.name = name;
-    out.material = p.material >= 0 && p.material + 1 < static_cast<int>(venue.materials.size())
+    // Compared without the +1 so that material = INT_MAX from a file cannot overflow.
+    out.material = p.material >= 0 && p.material < static_cast<int>(venue.materials.size()) - 1
                        ? p.material + 1 : 0;
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
     const size_t n = positions.count();
+    std::optional<AccessorReader> idx;
+    if (p.indices >= 0) {
+      idx.emplace(model, p.indices);
+      if (!idx->ok()) {
+        error = "mesh '" + name + "' indices: " + idx->error();
+        return false;
+      }
+      if (idx->components() != 1) {
+        error = "mesh '" + name + "' indices: accessors[" + std::to_string(p.indices) + "] is not SCALAR";
+        return false;
+      }
+    }
+    if (!reserve(name, n, (idx ? idx->count() : n) / 3)) return false;
     out.positions.resize(n);
     for (size_t i = 0; i < n; ++i) {
       const glm::vec4 v(positions.component(i, 0), positions.component(i, 1), positions.component(i, 2), 1.0f);
       out.positions[i] = glm::vec3(world * v);
+      // A NaN or infinite corner would poison the bounds and the BVH built from them.
+      if (!std::isfinite(out.positions[i].x) || !std::isfinite(out.positions[i].y) ||
+          !std::isfinite(out.positions[i].z)) {
+        error = "mesh '" + name + "' POSITION: accessors[" + std::to_string(pos->second) + "] element " +
+                std::to_string(i) + " is not finite in world space";
+        return false;
+      }
     }
     if (auto it = p.attributes.find("NORMAL"); it != p.attributes.end()) {
       AccessorReader normals(model, it->second);
@@ -214,15 +293,10 @@ struct Loader {
         for (size_t i = 0; i < n; ++i) out.uvs[i] = glm::vec2(uvs.component(i, 0), uvs.component(i, 1));
       }
     }
-    if (p.indices >= 0) {
-      AccessorReader idx(model, p.indices);
-      if (!idx.ok() || idx.components() != 1) {
-        error = "mesh '" + name + "': indices accessor is out of its buffer or not SCALAR";
-        return false;
-      }
-      out.indices.resize(idx.count());
-      for (size_t i = 0; i < idx.count(); ++i) {
-        out.indices[i] = idx.index(i);
+    if (idx) {
+      out.indices.resize(idx->count());
+      for (size_t i = 0; i < idx->count(); ++i) {
+        out.indices[i] = idx->index(i);
         if (out.indices[i] >= n) {
           error = "mesh '" + name + "': index " + std::to_string(out.indices[i]) + " past the " +
                   std::to_string(n) + " vertices";
@@ -237,7 +311,11 @@ struct Loader {
     // A mirroring transform flips the winding; keep triangles counter-clockwise as glTF says.
     if (glm::determinant(glm::mat3(world)) < 0.0f)
       for (size_t t = 0; t + 2 < out.indices.size(); t += 3) std::swap(out.indices[t + 1], out.indices[t + 2]);
-    if (out.normals.empty()) flatNormals(out);
+    // Without usable normals, flatNormals stores 3 new vertices per triangle.
+    if (out.normals.empty()) {
+      if (!reserve(name, out.indices.size(), 0)) return false;
+      flatNormals(out);
+    }
     if (!out.indices.empty()) venue.primitives.push_back(std::move(out));
     return true;
   }
@@ -273,6 +351,12 @@ struct Loader {
       error = "node tree deeper than 256 levels (a cycle?)";
       return false;
     }
+    // Children may be shared, so a small file can describe exponentially many instances.
+    if (++nodeVisits > limits.maxNodeVisits) {
+      error = "nodes[" + std::to_string(index) + "]: more than " + std::to_string(limits.maxNodeVisits) +
+              " node instances (the limit; nodes shared many times over?)";
+      return false;
+    }
     const tinygltf::Node& n = model.nodes[index];
     const glm::mat4 world = parent * nodeMatrix(n);
     if (n.mesh >= 0 && n.mesh < static_cast<int>(model.meshes.size())) {
@@ -292,6 +376,10 @@ struct Loader {
 
 glm::vec4 Texture::sampleLinear(glm::vec2 uv) const {
   if (width <= 0 || height <= 0) return glm::vec4(1.0f);
+  // A NaN or infinite coordinate (a degenerate triangle's barycentrics, a hostile file) has no
+  // texel; casting its floor to int is undefined, so it samples at 0 instead.
+  if (!std::isfinite(uv.x)) uv.x = 0.0f;
+  if (!std::isfinite(uv.y)) uv.y = 0.0f;
   const float x = (uv.x - std::floor(uv.x)) * width - 0.5f;
   const float y = (uv.y - std::floor(uv.y)) * height - 0.5f;
   const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
@@ -328,34 +416,48 @@ glm::vec3 Venue::emission(const Primitive& p, glm::vec2 uv) const {
   return e;
 }
 
-Result<Venue> loadVenue(const std::filesystem::path& file) {
-  const std::string name = file.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
-    return Error{name, "", "venue file not found (expected a .gltf or .glb file)"};
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string err, warn;
-  const std::string ext = file.extension().string();
-  bool ok = false;
-  try {
-    ok = (ext == ".glb" || ext == ".GLB") ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
-                                          : loader.LoadASCIIFromFile(&model, &err, &warn, name);
-  } catch (const std::exception& e) {
-    err = e.what();
+namespace {
+
+// Decodes with tinygltf's own stb loader, after refusing an image whose header promises more
+// pixels than a texture may hold (a 40-byte PNG can claim 2^24 x 2^24).
+bool loadImageLimited(tinygltf::Image* image, const int imageIndex, std::string* err, std::string* warn, int reqWidth,
+                      int reqHeight, const unsigned char* bytes, int size, void* user) {
+  int w = 0, h = 0, comp = 0;
+  if (stbi_info_from_memory(bytes, size, &w, &h, &comp) &&
+      static_cast<size_t>(w) * static_cast<size_t>(h) > kMaxVenueTexturePixels) {
+    if (err)
+      *err += "images[" + std::to_string(imageIndex) + "]: " + std::to_string(w) + " x " + std::to_string(h) +
+              " pixels; expected at most " + std::to_string(kMaxVenueTexturePixels) + "\n";
+    return false;
   }
-  if (!ok) {
-    std::string first = err.substr(0, err.find('\n'));
-    if (first.empty()) first = "not a valid glTF 2.0 file";
-    return Error{name, "", "cannot read glTF: " + first};
-  }
+  return tinygltf::LoadImageData(image, imageIndex, err, warn, reqWidth, reqHeight, bytes, size, user);
+}
+
+// File access for a venue read from memory without a base folder: every external URI fails.
+tinygltf::FsCallbacks noFiles() {
+  tinygltf::FsCallbacks fs{};
+  fs.FileExists = [](const std::string&, void*) { return false; };
+  fs.ExpandFilePath = [](const std::string& path, void*) { return path; };
+  fs.ReadWholeFile = [](std::vector<unsigned char>*, std::string* err, const std::string& path, void*) {
+    if (err) *err += "external file '" + path + "' is not read (in-memory venue)\n";
+    return false;
+  };
+  fs.WriteWholeFile = [](std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+    return false;
+  };
+  fs.user_data = nullptr;
+  return fs;
+}
+
+Result<Venue> venueFromModel(const tinygltf::Model& model, const std::filesystem::path& file, const std::string& name,
+                             const VenueLimits& limits) {
   Venue venue;
   venue.file = file;
-  Loader l{model, venue, name, {}, 0};
+  Loader l{model, venue, limits, {}, 0};
   l.materials();
   const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
   if (sceneIndex < static_cast<int>(model.scenes.size())) {
-    for (int root : model.scenes[sceneIndex].nodes)
+    for (int root : model.scenes[static_cast<size_t>(sceneIndex)].nodes)
       if (!l.node(root, glm::mat4(1.0f))) return Error{name, "", l.error};
   } else {
     for (size_t i = 0; i < model.nodes.size(); ++i)  // no scene: every node is a root
@@ -371,6 +473,57 @@ Result<Venue> loadVenue(const std::filesystem::path& file) {
   venue.boundsMin = lo;
   venue.boundsMax = hi;
   return venue;
+}
+
+Error gltfError(const std::string& name, const std::string& err) {
+  std::string first = err.substr(0, err.find('\n'));
+  if (first.empty()) first = "not a valid glTF 2.0 file";
+  return Error{name, "", "cannot read glTF: " + first};
+}
+
+}  // namespace
+
+Result<Venue> loadVenue(const std::filesystem::path& file, const VenueLimits& limits) {
+  const std::string name = file.string();
+  // A hostile file may still exhaust memory in tinygltf or here; that is a refusal, not an abort.
+  try {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+      return Error{name, "", "venue file not found (expected a .gltf or .glb file)"};
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(loadImageLimited, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;
+    const std::string ext = file.extension().string();
+    const bool ok = (ext == ".glb" || ext == ".GLB") ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
+                                                     : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+    if (!ok) return gltfError(name, err);
+    return venueFromModel(model, file, name, limits);
+  } catch (const std::exception& e) {
+    return Error{name, "", std::string("cannot load the venue: ") + e.what()};
+  }
+}
+
+Result<Venue> loadVenueFromMemory(std::span<const std::uint8_t> bytes, const std::string& sourceName,
+                                  const std::filesystem::path& baseDir, const VenueLimits& limits) {
+  try {
+    if (bytes.size() > std::numeric_limits<unsigned int>::max())
+      return Error{sourceName, "", "the venue is larger than 4 GiB"};
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(loadImageLimited, nullptr);
+    if (baseDir.empty()) loader.SetFsCallbacks(noFiles());
+    tinygltf::Model model;
+    std::string err, warn;
+    const bool glb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const auto size = static_cast<unsigned int>(bytes.size());
+    const bool ok = glb ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, baseDir.string())
+                        : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                                     size, baseDir.string());
+    if (!ok) return gltfError(sourceName, err);
+    return venueFromModel(model, std::filesystem::path(sourceName), sourceName, limits);
+  } catch (const std::exception& e) {
+    return Error{sourceName, "", std::string("cannot load the venue: ") + e.what()};
+  }
 }
 
 Venue venueFromTriangles(std::vector<glm::vec3> trianglesM) {

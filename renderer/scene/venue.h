@@ -3,7 +3,10 @@
 // reference traces it. No GL here.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -61,7 +64,29 @@ struct Venue {
 // one primitive of the default material, for ray casts over geometry that is no glTF yet.
 Venue venueFromTriangles(std::vector<glm::vec3> trianglesM);
 
-// .gltf (with its .bin and images) or .glb. Errors name the file and what is wrong.
-Result<Venue> loadVenue(const std::filesystem::path& file);
+// What one venue may hold, checked before anything is allocated: a glTF file names counts of
+// its own (and can instance one mesh from many nodes), so without these a few hundred bytes
+// could ask for terabytes. Vertices are counted as read, and again when flat normals split
+// them (3 per triangle) for a mesh without normals.
+// The largest real venue in the tests has under 1 M triangles.
+inline constexpr std::size_t kMaxVenueVertices = 32'000'000;
+inline constexpr std::size_t kMaxVenueTriangles = 16'000'000;
+inline constexpr std::size_t kMaxVenueNodeVisits = 1'000'000;  // node instances walked
+inline constexpr std::size_t kMaxVenueTexturePixels = 8192u * 8192u;  // per image
+
+struct VenueLimits {
+  std::size_t maxVertices = kMaxVenueVertices;
+  std::size_t maxTriangles = kMaxVenueTriangles;
+  std::size_t maxNodeVisits = kMaxVenueNodeVisits;
+};
+
+// .gltf (with its .bin and images) or .glb. Errors name the file and what is wrong; no
+// exception leaves it.
+Result<Venue> loadVenue(const std::filesystem::path& file, const VenueLimits& limits = {});
+// The bytes of a .glb (they start with "glTF") or of a .gltf. External URIs resolve against
+// baseDir; with an empty baseDir only embedded data (data: URIs, the GLB chunk) is read and
+// any file reference is an error. Errors name sourceName.
+Result<Venue> loadVenueFromMemory(std::span<const std::uint8_t> bytes, const std::string& sourceName,
+                                  const std::filesystem::path& baseDir = {}, const VenueLimits& limits = {});
 
 }  // namespace haze

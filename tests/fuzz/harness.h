@@ -1,0 +1,35 @@
+// The fuzz harness functions, one per file parser: each feeds arbitrary bytes to one in-memory
+// entry point. libFuzzer calls them through LLVMFuzzerTestOneInput (HAZE_FUZZ=ON, clang), and
+// the unit suite unit_fuzz_replay calls them on the corpus in every ordinary build.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace haze::fuzz {
+
+// Each returns true when the parser accepted the input (the replay checks that valid seeds
+// are accepted and broken ones refused); false is a clean refusal. Nothing may crash or throw.
+bool acceptIes(const uint8_t* data, size_t size);
+bool acceptLdt(const uint8_t* data, size_t size);
+bool acceptProfileJson(const uint8_t* data, size_t size);
+bool acceptShow(const uint8_t* data, size_t size);
+bool acceptVenue(const uint8_t* data, size_t size);
+bool acceptGdtf(const uint8_t* data, size_t size);
+bool acceptGdtfXml(const uint8_t* data, size_t size);  // description.xml alone, zipped here
+bool acceptMvr(const uint8_t* data, size_t size);
+bool acceptArtNet(const uint8_t* data, size_t size);
+bool acceptSacn(const uint8_t* data, size_t size);
+
+}  // namespace haze::fuzz
+
+// In a libFuzzer build each harness file is its own program; elsewhere this expands to nothing.
+#ifdef HAZE_LIBFUZZER
+#define HAZE_FUZZ_ENTRY(fn)                                                      \
+  extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {      \
+    (void)haze::fuzz::fn(data, size);                                            \
+    return 0;                                                                    \
+  }
+#else
+#define HAZE_FUZZ_ENTRY(fn)
+#endif
