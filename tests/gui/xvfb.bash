@@ -1,9 +1,11 @@
 # Sourced by GUI tests: start_xvfb N starts Xvfb on display :N and stops it on exit. Each GUI
 # test has a display number of its own (input_events 91, import_mvr 92, screenshot_smoke 93,
 # walkthrough 94), so tests that run in parallel never share a display or drive each other's
-# windows, and no test ever picks a number while another server is starting or shutting down:
-# with -displayfd two servers racing for the same number could hand a test a display that went
-# away a moment later (the cause of a GUI test failing once with "no display").
+# windows.
+# -noreset: an X server resets itself whenever its last client disconnects, and refuses
+# connections while it does. The tests' xdotool calls are short-lived clients, so without it a
+# haze starting while an xdotool call closed failed with "X11: Failed to open display" (the GUI
+# tests' intermittent failure: it came from the server's reset, not from haze).
 start_xvfb() {
   local n=$1
   command -v Xvfb >/dev/null || { echo "FAIL: Xvfb is not installed (make deps installs xvfb)"; exit 1; }
@@ -11,7 +13,7 @@ start_xvfb() {
     echo "FAIL: display :$n is taken by a running X server (pid $(tr -dc '0-9' < "/tmp/.X$n-lock")); stop it to run this test"
     exit 1
   fi
-  Xvfb ":$n" -screen 0 1280x800x24 -nolisten tcp >/dev/null 2>&1 &
+  Xvfb ":$n" -screen 0 1280x800x24 -nolisten tcp -noreset >/dev/null 2>&1 &
   XVFB_PID=$!
   trap 'kill $XVFB_PID 2>/dev/null' EXIT
   export DISPLAY=":$n"
