@@ -6,7 +6,17 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "fixtures/photometry.h"
+
 namespace haze::fuzz {
+
+// An accepted distribution must also be safe to use: lookups walk the grid and its symmetry.
+inline void useDistribution(const Distribution& d) {
+  for (float t : {0.0f, 0.3f, 1.5f, 3.1f})
+    for (float p : {0.0f, 1.0f, 4.0f, 6.2f}) (void)d.intensityCd(t, p);
+  (void)d.peakCd();
+  (void)d.maxThetaRad();
+}
 
 // Each returns true when the parser accepted the input (the replay checks that valid seeds
 // are accepted and broken ones refused); false is a clean refusal. Nothing may crash or throw.
