@@ -111,11 +111,7 @@ int DmxMerger::expire(double nowS) {
 
 void DmxMerger::remerge(Universe& u) {
   ++generation_;
-  if (u.sources.empty()) {
-    u.blackedOut = options_.onLoss == LossPolicy::Blackout && u.merged.has_value();
-    return;
-  }
-  u.blackedOut = false;
+  if (u.sources.empty()) return;  // the last levels stay, under either loss policy
   int top = -1;
   for (const auto& [id, s] : u.sources) top = std::max(top, s.priority);
   DmxBuffer merged{};
@@ -134,7 +130,9 @@ const DmxBuffer* DmxMerger::universe(int number) const {
 
 bool DmxMerger::blackedOut(int number) const {
   auto it = universes_.find(number);
-  return it != universes_.end() && it->second.blackedOut;
+  // Had data, has no source left: lost (a universe that never had data is not "lost").
+  return options_.onLoss == LossPolicy::Blackout && it != universes_.end() && it->second.sources.empty() &&
+         it->second.merged.has_value();
 }
 
 std::vector<int> DmxMerger::activeUniverses() const {

@@ -105,7 +105,6 @@ class DmxMerger {
   struct Universe {
     std::map<DmxSourceId, Source> sources;
     std::optional<DmxBuffer> merged;
-    bool blackedOut = false;
   };
   void remerge(Universe& u);
 
