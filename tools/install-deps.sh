@@ -9,6 +9,10 @@ packages=(
   libgtest-dev libassimp-dev
   xvfb xdotool x11-utils imagemagick
 )
+# `make fuzz` (tools/fuzz.sh) asks for libFuzzer too: clang and its runtime.
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang-14 libclang-rt-14-dev)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
