@@ -1,6 +1,6 @@
 // haze render SHOW [--cue N | --all-cues] [--at S] [--list NAME] [--camera NAME]
 //                  [--width W --height H] [--quality Q] [--exposure EV] [--exposure-mode auto|manual]
-//                  [--bloom F] -o OUT.(png|pfm) | DIR/
+//                  [--bloom F] [--exr-pixel half|float] -o OUT.(png|pfm|exr) | DIR/
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -18,18 +18,26 @@ namespace {
 constexpr const char* kUsage =
     "usage: haze render SHOW [--cue N | --all-cues] [--at S] [--list NAME] [--camera NAME]\n"
     "                   [--width W --height H] [--quality draft|default|high|reference] [--exposure EV]\n"
-    "                   [--exposure-mode auto|manual] [--bloom F]\n"
-    "                   -o OUT.png|OUT.pfm (one image) | -o DIR/ (with --all-cues)\n"
+    "                   [--exposure-mode auto|manual] [--bloom F] [--exr-pixel half|float]\n"
+    "                   -o OUT.png|OUT.pfm|OUT.exr (one image) | -o DIR/ (with --all-cues)\n"
     "Without --cue the first cue is rendered; --at S renders S seconds after its GO.\n"
     "PNGs are metered like a camera (auto, the default) and --exposure EV is an offset from the\n"
     "metered exposure; with --exposure-mode manual it is absolute (EV 0: 50 cd/m^2 maps to 1).\n"
     "A camera's \"exposure\" in the show is used unless these are given. PFMs are never exposed.\n"
-    "--bloom F spreads the fraction F (0..1) of the light as lens glare in PNGs; PFMs stay radiometric.\n";
+    "--bloom F spreads the fraction F (0..1) of the light as lens glare in PNGs; PFMs stay radiometric.\n"
+    "EXRs hold the same radiometric L as PFMs (cd/m^2, linear Rec. 709), as half (the default) or\n"
+    "float (--exr-pixel float), with the show and cue in the header's comments.\n";
+
+std::string secondsText(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", s);
+  return text;
+}
 
 }  // namespace
 
 int runRender(const Args& args) {
-  std::string showPath, cue, list, out, camera, quality = "default", exposureMode;
+  std::string showPath, cue, list, out, camera, quality = "default", exposureMode, exrPixel = "half";
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
   bool allCues = false;
@@ -45,6 +53,7 @@ int runRender(const Args& args) {
       .number("--exposure", exposure, -100, 100, "a number of EV")
       .choice("--exposure-mode", exposureMode, {"auto", "manual"})
       .number("--bloom", bloom, 0, 1, "a fraction 0..1")
+      .choice("--exr-pixel", exrPixel, {"half", "float"})
       .text("-o|--output", out, "a file or a folder")
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
@@ -64,7 +73,7 @@ int runRender(const Args& args) {
 
   RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
                            .quality = *q, .exposureMode = parseExposureMode(exposureMode),
-                           .bloom = static_cast<float>(bloom)};
+                           .bloom = static_cast<float>(bloom), .exrPixel = *parseExrPixel(exrPixel)};
   if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
   auto session = RenderSession::open(*show, options);
   if (!session) return fail(session.error().str());
@@ -72,7 +81,11 @@ int runRender(const Args& args) {
   auto renderCue = [&](size_t index, const std::filesystem::path& file) -> bool {
     const StageState state = at >= 0 ? stateAt(*show, *profiles, *cueList, index, at)
                                      : trackedState(*show, *profiles, *cueList, index);
-    const Status s = (*session)->renderToFile(*show, *profiles, state, file);
+    const Cue& c = cueList->cues[index];
+    const std::string comment = "haze render of " + showPath + ", cue list " + cueList->name + ", cue " + c.number +
+                                (c.label.empty() ? "" : " \"" + c.label + "\"") +
+                                (at >= 0 ? ", " + secondsText(at) + " s after GO" : ", its full state");
+    const Status s = (*session)->renderToFile(*show, *profiles, state, file, comment);
     if (!s) {
       fail(s.error().str());
       return false;
