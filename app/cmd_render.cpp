@@ -100,7 +100,8 @@ int runRender(const Args& args) {
 
   RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
                            .quality = *q, .exposureMode = parseExposureMode(exposureMode),
-                           .bloom = static_cast<float>(bloom), .exrPixel = *parseExrPixel(exrPixel)};
+                           .bloom = static_cast<float>(bloom), .exrPixel = *parseExrPixel(exrPixel),
+                           .progress = progress};
   if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
   auto session = RenderSession::open(*show, options);
   if (!session) return fail(session.error().str());
@@ -117,7 +118,7 @@ int runRender(const Args& args) {
     if (job.from > job.to)
       return fail("--from " + cueList->cues[job.from].number + " comes after --to " + cueList->cues[job.to].number +
                   " in cue list '" + cueList->name + "'");
-    const Status s = renderVideo(**session, *show, *profiles, job);
+    const auto s = renderVideo(**session, *show, *profiles, job);
     if (!s) return fail(s.error().str());
     std::printf("%s\n", video.c_str());
     return 0;

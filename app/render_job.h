@@ -27,6 +27,7 @@ struct RenderJobOptions {
   std::optional<float> exposureEv;
   float bloom = 0.0f;  // PNG only
   ExrPixel exrPixel = ExrPixel::Half;  // EXR only
+  bool progress = false;  // --progress: report even when stderr is not a terminal (app/progress.h)
 };
 
 // The exposure a PNG of this show gets with these options.

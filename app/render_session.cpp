@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "app/frame_builder.h"
+#include "app/progress.h"
 #include "renderer/reference/reference.h"
 #include "renderer/scene/image.h"
 
@@ -65,14 +66,18 @@ Result<std::unique_ptr<RenderSession>> RenderSession::open(const Show& show, con
   return session;
 }
 
-Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const StageState& state) {
+Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const StageState& state, bool reportRows) {
   auto frame = buildFrame(show, profiles, state, options_.camera);
   if (!frame) return frame.error();
   referenceImage_.reset();
   if (options_.quality == Quality::Reference) {
     // The CPU reference integrator (renderer/reference), the oracle of the accuracy tests;
     // its image goes through the GPU's display encoding.
-    referenceImage_ = renderReference(venue_, *frame, options_.width, options_.height);
+    Progress progress("haze render (reference)", "rows", options_.height, options_.progress);
+    ReferenceOptions reference;
+    if (reportRows) reference.onRows = [&progress](int done, int) { progress.step(done); };
+    referenceImage_ = renderReference(venue_, *frame, options_.width, options_.height, reference);
+    if (reportRows) progress.step(options_.height);  // the last row may have been another thread's
     renderer_->setRadiance(*referenceImage_);
   } else {
     renderer_->render(*frame);
@@ -94,7 +99,7 @@ Status RenderSession::renderToFile(const Show& show, const ProfileSet& profiles,
   const std::string ext = out.extension().string();
   if (ext != ".pfm" && ext != ".png" && ext != ".exr")
     return Error{out.string(), "", "unknown image type (expected .png, .pfm or .exr)"};
-  if (Status s = draw(show, profiles, state); !s) return s;
+  if (Status s = draw(show, profiles, state, true); !s) return s;
   if (ext == ".png") return writePng8(display(show), options_.width, options_.height, out);
   if (ext == ".pfm") return writePfm(radiance(), out);
   return writeExrWarning(radiance(), out, {.pixel = options_.exrPixel, .comment = comment});

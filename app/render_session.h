@@ -28,7 +28,8 @@ class RenderSession {
   // The pieces of renderToFile, for frame loops (videos): draw a state (with the CPU reference
   // under Quality::Reference), then read the radiometric image or the display encoding, metered
   // and exposed exactly as a PNG of renderToFile.
-  Status draw(const Show& show, const ProfileSet& profiles, const StageState& state);
+  // reportRows: the CPU reference's rows as a progress line (a still; a video reports frames).
+  Status draw(const Show& show, const ProfileSet& profiles, const StageState& state, bool reportRows = false);
   ImageRGB radiance() const;
   std::vector<unsigned char> display(const Show& show);
   const RenderJobOptions& options() const { return options_; }

@@ -67,7 +67,7 @@ bool isImageSequence(const std::filesystem::path& out, std::string& error) {
   return true;
 }
 
-Status renderVideo(RenderSession& session, const Show& show, const ProfileSet& profiles, const VideoJob& job) {
+Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const ProfileSet& profiles, const VideoJob& job) {
   const CueList& list = *job.list;
   const CueTimeline timeline = playCueRange(list, job.from, job.to, job.holdS);
   const double endS = job.durationS > 0 ? job.durationS : timeline.endS;
@@ -90,6 +90,10 @@ Status renderVideo(RenderSession& session, const Show& show, const ProfileSet& p
   CuePlayer player(show, profiles, list);
   if (job.from > 0) player.jumpTo(job.from - 1, 0.0);
   size_t nextGo = 0;
+  StageState lastState;
+  std::vector<unsigned char> rgb;
+  ImageRGB radiance;
+  int drawn = 0;
   InterruptGuard guard;
   Progress progress("haze render", "frames", frames, job.progress);
   for (int f = 0; f < frames; ++f) {
@@ -102,28 +106,38 @@ Status renderVideo(RenderSession& session, const Show& show, const ProfileSet& p
     const double t = static_cast<double>(f) / job.fps;
     for (; nextGo < timeline.gos.size() && timeline.gos[nextGo].atS <= t; ++nextGo)
       if (!timeline.gos[nextGo].byFollow) player.gotoCue(timeline.gos[nextGo].cueIndex, timeline.gos[nextGo].atS);
-    const StageState state = player.state(t);
-    if (Status s = session.draw(show, profiles, state); !s) return s;
+    // Frames of a hold (or of a delay) show an unchanged stage: the frame state is built from
+    // the stage state alone, so the last picture is that frame exactly and is not drawn again.
+    StageState state = player.state(t);
+    if (f == 0 || state != lastState) {
+      if (Status s = session.draw(show, profiles, state); !s) return s.error();
+      if (exr)
+        radiance = session.radiance();
+      else
+        rgb = session.display(show);
+      lastState = std::move(state);
+      ++drawn;
+    }
     if (exr) {
       const Cue& cue = list.cues[player.currentCue().value_or(job.from)];
       char comment[256];
       std::snprintf(comment, sizeof comment, "haze render --video of %s, cue list %s, frame %d at %.3f s, cue %s",
                     show.file.filename().string().c_str(), list.name.c_str(), f, t, cue.number.c_str());
-      if (Status s = writeExrWarning(session.radiance(), sequenceFile(job.out, f),
+      if (Status s = writeExrWarning(radiance, sequenceFile(job.out, f),
                                      {.pixel = options.exrPixel, .comment = comment});
           !s)
-        return s;
+        return s.error();
     } else if (sequence) {
-      if (Status s = writePng8(session.display(show), options.width, options.height, sequenceFile(job.out, f)); !s)
-        return s;
-    } else if (Status s = writer->addFrame(session.display(show)); !s) {
-      return s;
+      if (Status s = writePng8(rgb, options.width, options.height, sequenceFile(job.out, f)); !s) return s.error();
+    } else if (Status s = writer->addFrame(rgb); !s) {
+      return s.error();
     }
     progress.step(f + 1);
   }
   progress.finish();
-  if (writer) return writer->finish();
-  return Ok{};
+  if (writer)
+    if (Status s = writer->finish(); !s) return s.error();
+  return VideoStats{.frames = frames, .drawn = drawn};
 }
 
 }  // namespace haze

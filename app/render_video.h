@@ -29,6 +29,11 @@ bool isImageSequence(const std::filesystem::path& out, std::string& error);
 
 // Renders the job; errors are one line (file and reason) and leave no file under the video's
 // name. Ctrl-C stops between frames and is reported as an error ("interrupted").
-Status renderVideo(RenderSession& session, const Show& show, const ProfileSet& profiles, const VideoJob& job);
+struct VideoStats {
+  int frames = 0;
+  int drawn = 0;  // the others repeat an unchanged stage (holds, delays)
+};
+
+Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const ProfileSet& profiles, const VideoJob& job);
 
 }  // namespace haze
