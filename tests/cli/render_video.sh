@@ -37,6 +37,11 @@ check "frame at 0.5 s differs from the still at 1.5 s (PSNR $psnr6 dB < 35)" 'aw
 check "2 PNGs for 0.5 s at 4 fps" '[ "$(ls "$tmp"/seq-*.png | wc -l)" -eq 2 ] && [ -f "$tmp/seq-00001.png" ]'
 "$haze" render "$show" --cue 2 --at 0.25 "${size[@]}" -o "$tmp/still025.png"
 check "PNG frame 1 is the still at 0.25 s" 'cmp -s "$tmp/seq-00001.png" "$tmp/still025.png"'
+# Cue 3 waits 2 s (its delay) before moving: frame 1 repeats frame 0's picture without drawing
+# it, and must still be the stage at 0.5 s.
+"$haze" render "$show" --video "$tmp/delay-%d.png" --from 3 --to 3 --duration 1 --fps 2 "${size[@]}" >/dev/null
+"$haze" render "$show" --cue 3 --at 0.5 "${size[@]}" -o "$tmp/still3.png"
+check "a repeated frame of a delay is the still of its moment" 'cmp -s "$tmp/delay-1.png" "$tmp/still3.png"'
 "$haze" render "$show" --video "$tmp/seq-%03d.exr" --from 2 --to 2 --duration 0.25 --fps 4 --width 64 --height 36 >/dev/null
 "$haze" render "$show" --cue 2 --at 0 --width 64 --height 36 -o "$tmp/still0.pfm"
 ffmpeg -v error -i "$tmp/seq-000.exr" -f rawvideo -pix_fmt gbrpf32le -y "$tmp/seq-000.raw"
