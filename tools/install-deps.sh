@@ -7,7 +7,8 @@ packages=(
   libglm-dev nlohmann-json3-dev libstb-dev libtinygltf-dev libpugixml-dev libzip-dev
   libglfw3-dev libimgui-dev libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libassimp-dev
-  xvfb xdotool x11-utils imagemagick
+  libopenexr-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libcairo2-dev
+  xvfb xdotool x11-utils imagemagick ffmpeg poppler-utils
 )
 # `make fuzz` (tools/fuzz.sh) asks for libFuzzer too: clang and its runtime.
 if [ "${1:-}" = "--fuzz" ]; then
