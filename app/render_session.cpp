@@ -1,5 +1,6 @@
 #include "app/render_session.h"
 
+#include <cstdio>
 #include <cstdlib>
 
 #include "app/frame_builder.h"
@@ -28,6 +29,7 @@ RenderSettings renderSettingsFor(Quality q, int width, int height) {
     case Quality::Reference:
       s = {.width = width, .height = height, .lightMapSize = 1024, .shadowMapSize = 2048, .planes = 128,
            .scatterDivisor = 1, .frames = 4, .minSamplesPerChord = 16};
+      s.shadowTexelBudget = int64_t{64} << 20;  // 256 MB: eight 2048 px maps, 76 of 928 px
       break;
   }
   return s;
@@ -78,6 +80,7 @@ Status RenderSession::renderToFile(const Show& show, const ProfileSet& profiles,
     renderer_->setRadiance(image);
   } else {
     renderer_->render(*frame);
+    for (const std::string& w : renderer_->warnings()) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
   }
   if (ext == ".pfm") return writePfm(renderer_->readRadiance(), out);
   if (ext == ".png") {
