@@ -127,7 +127,7 @@ float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float ne
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, 2.0f);
   venue.bind();
-  for (const auto& d : venue.draws()) venue.draw(d);
+  venue.drawAll();
   glDisable(GL_POLYGON_OFFSET_FILL);
 
   // The farthest view depth the map sees; a texel at the far plane means light escapes.

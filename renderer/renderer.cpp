@@ -196,7 +196,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glProgramUniformMatrix4fv(m.shadowProgram.id(), HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   m.venue.bind();
-  for (const GpuVenue::Draw& d : m.venue.draws()) m.venue.draw(d);
+  m.venue.drawAll();
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
