@@ -30,6 +30,7 @@ RenderSettings renderSettingsFor(Quality q, int width, int height) {
     case Quality::Reference:
       s = {.width = width, .height = height, .lightMapSize = 1024, .shadowMapSize = 2048, .planes = 128,
            .scatterDivisor = 1, .frames = 4, .minSamplesPerChord = 16};
+      s.shadowTexelBudget = int64_t{64} << 20;  // 256 MB: eight 2048 px maps, 76 of 928 px
       break;
   }
   return s;
@@ -81,6 +82,7 @@ Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const S
     renderer_->setRadiance(*referenceImage_);
   } else {
     renderer_->render(*frame);
+    for (const std::string& w : renderer_->warnings()) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
   }
   return Ok{};
 }

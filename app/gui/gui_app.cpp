@@ -266,6 +266,8 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
       ++gui.stillFrames;
     }
   }
+  // What the renderer could not draw goes on the status line (once, not every frame).
+  if (!r->warnings().empty() && gui.status != r->warnings().front()) gui.say(r->warnings().front(), true);
   // The meter reads only new renders; the shown EV glides towards it (no flicker in a fade) and
   // the window keeps drawing until it has arrived.
   if (!settled && gui.exposureMode == ExposureMode::Auto) gui.meteredEv = r->meter().ev;
