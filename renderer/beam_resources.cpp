@@ -36,6 +36,29 @@ glm::mat4 shadowViewProjection(const BeamState& b, float farM, float cutoffRad) 
   return glm::perspective(fov, 1.0f, kShadowNearM, farM) * view;
 }
 
+// The beam's core (docs/rendering.md, "Where the samples go"): cos^2 of the half-angle outside
+// which the light map holds under 1 % of its peak (a texel and a half of margin for the
+// bilinear lookup), or 0 when that is more than half the cutoff cone: then the split would
+// buy nothing and the whole chord is walked as one.
+float coreCos2(const LightMap& map, float cutoffRad) {
+  float peak = 0.0f;
+  for (float c : map.cd) peak = std::max(peak, c);
+  if (!(peak > 0.0f)) return 0.0f;
+  float r2 = 0.0f;
+  const float texel = 2.0f / static_cast<float>(map.size);
+  for (int j = 0; j < map.size; ++j)
+    for (int i = 0; i < map.size; ++i)
+      if (map.cd[static_cast<size_t>(j) * map.size + i] >= 0.01f * peak) {
+        const float u = (i + 0.5f) * texel - 1.0f, v = (j + 0.5f) * texel - 1.0f;
+        r2 = std::max(r2, u * u + v * v);
+      }
+  // The map's (u, v) in [-1, 1] spans tan(theta) up to tan(cutoff).
+  const float radius = std::sqrt(r2) + 1.5f * texel;
+  if (radius > 0.5f) return 0.0f;
+  const float tanCore = radius * std::tan(cutoffRad);
+  return 1.0f / (1.0f + tanCore * tanCore);
+}
+
 }  // namespace
 
 BeamResources::BeamResources(const BeamResourceSettings& settings) : settings_(settings) {}
@@ -69,6 +92,7 @@ void BeamResources::ensureCapacity(int beams) {
   opticsKeys_.assign(static_cast<size_t>(capacity_), 0);
   shadowKeys_.assign(static_cast<size_t>(capacity_), 0);
   extents_.assign(static_cast<size_t>(capacity_), 1.0f);
+  coreCos2_.assign(static_cast<size_t>(capacity_), 0.0f);
   reachesM_.assign(static_cast<size_t>(capacity_), 1e30f);
 }
 
@@ -123,6 +147,7 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
       if (map.size == size && map.cd.size() == static_cast<size_t>(size) * size) {
         glTextureSubImage3D(lightMaps_.id(), 0, 0, 0, i, size, size, 1, GL_RED, GL_FLOAT, map.cd.data());
         extents_[static_cast<size_t>(i)] = map.extent;
+        coreCos2_[static_cast<size_t>(i)] = coreCos2(map, cutoff);
       }
       opticsKeys_[static_cast<size_t>(i)] = opticsKey;
       ++stats.lightMapsBaked;
@@ -145,7 +170,7 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
     g.shadowViewProj = viewProj;
     // A radius of 0 draws no disc (a degenerate quad): tests use it to see the in-scattering alone.
     const float rl = std::max(b.optics.lensRadiusM, 0.0f);
-    g.lens = glm::vec4(rl, rl > 0.0f ? 1.0f / (3.14159265f * rl * rl) : 0.0f, 0.0f, 0.0f);
+    g.lens = glm::vec4(rl, rl > 0.0f ? 1.0f / (3.14159265f * rl * rl) : 0.0f, coreCos2_[static_cast<size_t>(i)], 0.0f);
   }
   if (n > 0)
     glNamedBufferSubData(ssbo_.id(), 0, static_cast<GLsizeiptr>(sizeof(GpuBeam) * n), gpuBeams_.data());

@@ -62,6 +62,7 @@ class BeamResources {
   std::vector<uint64_t> opticsKeys_;   // per layer, what is baked there
   std::vector<uint64_t> shadowKeys_;
   std::vector<float> extents_;
+  std::vector<float> coreCos2_;  // per layer: the light map's core (beam_resources.cpp)
   std::vector<float> reachesM_;
   std::vector<float> depthScratch_;
   std::vector<GpuBeam> gpuBeams_;
