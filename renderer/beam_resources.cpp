@@ -64,6 +64,29 @@ int shadowSizeFor(int beams, int wanted, int64_t budget) {
   return std::clamp(static_cast<int>(fit) / 16 * 16, std::min(64, wanted), wanted);
 }
 
+// The beam's core (docs/rendering.md, "Where the samples go"): cos^2 of the half-angle outside
+// which the light map holds under 1 % of its peak (a texel and a half of margin for the
+// bilinear lookup), or 0 when that is more than half the cutoff cone: then the split would
+// buy nothing and the whole chord is walked as one.
+float coreCos2(const LightMap& map, float cutoffRad) {
+  float peak = 0.0f;
+  for (float c : map.cd) peak = std::max(peak, c);
+  if (!(peak > 0.0f)) return 0.0f;
+  float r2 = 0.0f;
+  const float texel = 2.0f / static_cast<float>(map.size);
+  for (int j = 0; j < map.size; ++j)
+    for (int i = 0; i < map.size; ++i)
+      if (map.cd[static_cast<size_t>(j) * map.size + i] >= 0.01f * peak) {
+        const float u = (i + 0.5f) * texel - 1.0f, v = (j + 0.5f) * texel - 1.0f;
+        r2 = std::max(r2, u * u + v * v);
+      }
+  // The map's (u, v) in [-1, 1] spans tan(theta) up to tan(cutoff).
+  const float radius = std::sqrt(r2) + 1.5f * texel;
+  if (radius > 0.5f) return 0.0f;
+  const float tanCore = radius * std::tan(cutoffRad);
+  return 1.0f / (1.0f + tanCore * tanCore);
+}
+
 }  // namespace
 
 BeamResources::BeamResources(const BeamResourceSettings& settings) : settings_(settings) {}
@@ -108,6 +131,7 @@ void BeamResources::ensureLightCapacity(int layers) {
   if (!hasStorage(lightMaps_)) lightCapacity_ = 0;
   lightKeys_.assign(static_cast<size_t>(lightCapacity_), 0);
   extents_.assign(static_cast<size_t>(lightCapacity_), 1.0f);
+  coreCos2_.assign(static_cast<size_t>(lightCapacity_), 0.0f);
 }
 
 float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float nearM, float farM, float cutoffRad,
@@ -180,6 +204,7 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
       if (map.size == size && map.cd.size() == static_cast<size_t>(size) * size) {
         glTextureSubImage3D(lightMaps_.id(), 0, 0, 0, layer, size, size, 1, GL_RED, GL_FLOAT, map.cd.data());
         extents_[static_cast<size_t>(layer)] = map.extent;
+        coreCos2_[static_cast<size_t>(layer)] = coreCos2(map, b.optics.cutoffHalfAngleRad());
       }
       lightKeys_[static_cast<size_t>(layer)] = keys[static_cast<size_t>(i)];
       ++stats.lightMapsBaked;
@@ -209,7 +234,7 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
     g.shadowViewProj = viewProj;
     // A radius of 0 draws no disc (a degenerate quad): tests use it to see the in-scattering alone.
     const float rl = std::max(b.optics.lensRadiusM, 0.0f);
-    g.lens = glm::vec4(rl, rl > 0.0f ? 1.0f / (3.14159265f * rl * rl) : 0.0f, 0.0f, 0.0f);
+    g.lens = glm::vec4(rl, rl > 0.0f ? 1.0f / (3.14159265f * rl * rl) : 0.0f, coreCos2_[static_cast<size_t>(layer)], 0.0f);
   }
   stats.lightMapLayers = static_cast<int>(layerOf.size());
   if (!stats.notDrawn.empty()) {

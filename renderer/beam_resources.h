@@ -86,6 +86,7 @@ class BeamResources {
   std::vector<uint64_t> shadowKeys_;   // per beam (= shadow layer)
   std::vector<float> reachesM_;        // per beam
   std::vector<char> drawn_;            // per beam
+  std::vector<float> coreCos2_;        // per light-map layer: the map's core (beam_resources.cpp)
   std::vector<float> depthScratch_;
   std::vector<GpuBeam> gpuBeams_;
 };
