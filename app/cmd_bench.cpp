@@ -210,6 +210,7 @@ int runBench(const Args& args) {
   double coldMs = 0.0;
   uint64_t fragments = 0, scattering = 0;
   int beamsInView = 0, shadowSize = 0, lightLayers = 0;
+  double beamsPerTile = 0.0;
   std::vector<std::string> warnings;
   for (int f = 0; f <= frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -236,6 +237,7 @@ int runBench(const Args& args) {
     fragments = t.planeFragments;
     scattering = t.scatteringFragments;
     beamsInView = t.beamsDrawn;
+    beamsPerTile = t.beamsPerTile;
     shadowSize = t.shadowMapSize;
     lightLayers = t.lightMapLayers;
   }
@@ -261,6 +263,7 @@ int runBench(const Args& args) {
                     {"post", median(post)}, {"meter", median(meter)}};
   out["plane_fragments"] = fragments;
   out["scattering_fragments"] = scattering;
+  out["surface_beams_per_tile"] = beamsPerTile;
   out["shadow_map_size"] = shadowSize;
   out["light_map_layers"] = lightLayers;
   out["peak_memory_mb"] = peakMemoryMb();
@@ -287,7 +290,8 @@ int runBench(const Args& args) {
                 "scattering); %.0f ms CPU per frame\n", median(shadow), median(surfaces), median(beams),
                 median(post), median(meter), static_cast<unsigned long long>(fragments),
                 static_cast<unsigned long long>(scattering), median(cpu));
-    std::printf("  shadow maps %d px, %d light maps; peak memory %.0f MB\n", shadowSize, lightLayers, peakMemoryMb());
+    std::printf("  shadow maps %d px, %d light maps, %.1f beams per lit surface tile; peak memory %.0f MB\n", shadowSize,
+                lightLayers, beamsPerTile, peakMemoryMb());
     if (compare)
       std::printf("  reference %.0f ms, mean relative error %.4f, %.0fx faster\n", out["reference_ms"].get<double>(),
                   out["mean_relative_error"].get<double>(), out["speedup_vs_reference"].get<double>());

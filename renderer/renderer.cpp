@@ -254,6 +254,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   times_.beamsDrawn = m.beamPass.beamsDrawn();
   if (timing) {
     times_.scatteringFragments = m.beamPass.scatteringFragments();
+    if (settings_.tiledSurfaces && m.beams.count() > 0) times_.beamsPerTile = m.tiles.meanBeamsPerTile();
     double* ms[3] = {&times_.shadowMapsMs, &times_.surfacesMs, &times_.beamsMs};
     for (int i = 0; i < 3; ++i) {
       GLuint64 ns = 0;

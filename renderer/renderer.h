@@ -56,6 +56,7 @@ struct PassTimes {
   int shadowMapsRendered = 0, lightMapsBaked = 0;
   int shadowMapSize = 0, lightMapLayers = 0;  // see BeamUpdateStats
   int beamsDrawn = 0;                // in-scattering footprints drawn (in view, lit)
+  double beamsPerTile = 0;           // surfaces: beams tried per lit 16x16 tile (timePasses only)
   uint64_t planeFragments = 0;       // footprint pixels times planes (or walks, when fused)
   uint64_t scatteringFragments = 0;  // of those, the ones that added light (timePasses only)
   int accumulatedFrames = 0;

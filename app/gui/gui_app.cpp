@@ -267,7 +267,9 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
     }
   }
   // What the renderer could not draw goes on the status line (once, not every frame).
-  if (!r->warnings().empty() && gui.status != r->warnings().front()) gui.say(r->warnings().front(), true);
+  const std::string warning = r->warnings().empty() ? "" : r->warnings().front();
+  if (warning != gui.renderWarning && !warning.empty()) gui.say(warning, true);
+  gui.renderWarning = warning;
   // The meter reads only new renders; the shown EV glides towards it (no flicker in a fade) and
   // the window keeps drawing until it has arrived.
   if (!settled && gui.exposureMode == ExposureMode::Auto) gui.meteredEv = r->meter().ev;

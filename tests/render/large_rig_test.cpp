@@ -69,15 +69,19 @@ TEST_F(LargeRigTest, ThousandFixturesAtDefaultEveryBeamContributes) {
   // Batches with the maps at the full frame's size, so that only the beam count differs.
   RenderSettings batchSettings = s;
   batchSettings.shadowMapSize = times.shadowMapSize;
-  FrameState none = frame;
-  none.beams.clear();
-  const ImageRGB base = renderFrame(venue, none, batchSettings, nullptr, nullptr);
+  auto batchRenderer = Renderer::create(venue, batchSettings);  // one for all batches: programs built once
+  ASSERT_TRUE(batchRenderer.ok()) << batchRenderer.error().str();
+  FrameState part = frame;
+  part.beams.clear();
+  (*batchRenderer)->render(part);
+  const ImageRGB base = (*batchRenderer)->readRadiance();
   std::vector<glm::vec3> sum(full.pixels.size(), glm::vec3(0.0f));
   int batches = 0;
   for (int first = 0; first < kFixtures; first += kBatch, ++batches) {
-    FrameState part = frame;
     part.beams.assign(frame.beams.begin() + first, frame.beams.begin() + std::min(first + kBatch, kFixtures));
-    const ImageRGB img = renderFrame(venue, part, batchSettings, nullptr, nullptr);
+    (*batchRenderer)->render(part);
+    EXPECT_TRUE((*batchRenderer)->warnings().empty());
+    const ImageRGB img = (*batchRenderer)->readRadiance();
     ASSERT_EQ(img.pixels.size(), sum.size());
     for (size_t i = 0; i < sum.size(); ++i) sum[i] += img.pixels[i] - base.pixels[i];
   }

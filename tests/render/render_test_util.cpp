@@ -36,7 +36,9 @@ BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldD
   b.optics.color = color;
   b.optics.dimmer = 1.0f;
   b.poseKey = 1;
-  b.opticsKey = 1;
+  // Distinct per beam: the renderer shares a light map between beams of equal optics keys.
+  static uint64_t nextOpticsKey = 1;
+  b.opticsKey = nextOpticsKey++;
   return b;
 }
 
