@@ -64,9 +64,9 @@ int shadowSizeFor(int beams, int wanted, int64_t budget) {
   return std::clamp(static_cast<int>(fit) / 16 * 16, std::min(64, wanted), wanted);
 }
 
-// The beam's core (docs/rendering.md, "Where the samples go"): cos^2 of the half-angle outside
+// The beam's core (docs/rendering.md, "The core of a beam"): cos^2 of the half-angle outside
 // which the light map holds under 1 % of its peak (a texel and a half of margin for the
-// bilinear lookup), or 0 when that is more than half the cutoff cone: then the split would
+// bilinear lookup), or 0 when its tangent is more than half the cutoff's: then the split would
 // buy nothing and the whole chord is walked as one.
 float coreCos2(const LightMap& map, float cutoffRad) {
   float peak = 0.0f;

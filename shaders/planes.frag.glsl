@@ -64,7 +64,9 @@ void main() {
     vec2 piece = pieces[p];
     bool inCore = !hasCore || piece == core;  // a chord that misses the core sees only the rest
     int minN = inCore ? uMinSamples : max(uMinSamples / 4, 2);
-    int n = max(int(ceil((piece.y - piece.x) / dz)), minN);
+    // As many as the planes the piece spans (not a count that depends on the jitter: that
+    // biases the strata).
+    int n = max(int(round((piece.y - piece.x) / dz)), minN);
     float phi0 = atan(piece.x * len - tc, D), phi1 = atan(piece.y * len - tc, D);
     float dphi = (phi1 - phi0) / float(n);
     // tan(phi) from one step to the next by the addition theorem (a division instead of a
