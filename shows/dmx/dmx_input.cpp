@@ -243,7 +243,9 @@ void DmxInput::receive(DmxProtocol protocol, std::span<const uint8_t> datagram,
   frame.perSlotPriority = p.packet.startCode == kSacnStartPerSlotPriority;
   frame.slots = std::span<const uint8_t>(p.packet.slots.data(),
                                          static_cast<size_t>(p.packet.slotCount));
-  // Stream_Terminated takes effect at once: the source is gone, whatever it synchronises on.
+  // Stream_Terminated takes effect at once: the source leaves the universe, whatever it
+  // synchronises on, and what it had waiting there for a sync packet goes with it.
+  if (frame.terminated) stats_.superseded += sync_.forget(frame.source, frame.universe);
   if (p.packet.syncAddress != 0 && !frame.terminated)
     offer({DmxProtocol::Sacn, p.packet.syncAddress}, frame, p.packet.forceSync(), nowS);
   else

@@ -47,7 +47,8 @@ struct DmxInputStats {
   // counts them as they are held, and each is counted again when its sync releases it (good,
   // late...) or as superseded; SyncGate::heldCount() are those still waiting.
   uint64_t held = 0;         // frames held for a sync packet
-  uint64_t superseded = 0;   // held frames replaced by a newer one before their sync came
+  uint64_t superseded = 0;   // held frames replaced by a newer one before their sync came (or
+                             // dropped because their source sent Stream_Terminated)
   uint64_t discoveryPackets = 0;  // E1.31 universe discovery pages
   uint64_t timecodePackets = 0;   // ArtTimeCode (kept for takeTimecodes)
   std::map<std::string, uint64_t> malformed;  // "sacn.bad_priority" -> count

@@ -78,6 +78,16 @@ std::vector<HeldFrame> SyncGate::sync(const SyncGroup& group, double nowS) {
   return take(it->second);
 }
 
+size_t SyncGate::forget(const DmxSourceId& source, int universe) {
+  size_t n = 0;
+  for (auto& [group, g] : groups_)
+    n += std::erase_if(g.held, [&](const auto& kv) {
+      return std::get<0>(kv.first) == source && std::get<1>(kv.first) == universe;
+    });
+  heldCount_ -= n;
+  return n;
+}
+
 std::vector<HeldFrame> SyncGate::expire(double nowS) {
   std::vector<HeldFrame> out;
   for (auto& [group, g] : groups_) {

@@ -60,6 +60,9 @@ class SyncGate {
   // Groups whose sync stopped: the held frames of those not forced, to merge now.
   std::vector<HeldFrame> expire(double nowS);
 
+  // Drops the frames held for a source's universe (it sent Stream_Terminated); returns how many.
+  size_t forget(const DmxSourceId& source, int universe);
+
   bool synchronised(const SyncGroup& group, double nowS) const;
   size_t heldCount() const { return heldCount_; }
   // The sACN synchronization addresses data has named, in order (for joining their groups).

@@ -109,6 +109,7 @@ for reason in artnet.timecode_bad_time artnet.truncated sacn.bad_sync_address sa
 done
 grep -q "haze live: answered [0-9]* ArtPolls" "$TMP/err" || fail "the ArtPolls were not answered"
 grep -Eq "haze live: OSC: 1 commands done, [0-9]{3,} refused" "$TMP/err" || fail "the malformed OSC messages were not refused and counted"
+grep -E "^haze live: [0-9.]+ s: |^haze live: OSC: |^haze live: answered " "$TMP/err"
 GROWTH=$(( RSS_AFTER - RSS_BEFORE ))
 echo "resident size: $RSS_BEFORE kB before, $RSS_AFTER kB after the flood; $(grep 'longest pass' "$TMP/err" | sed 's/^haze live: //')"
 [ "$GROWTH" -lt 65536 ] || fail "haze grew by $GROWTH kB during the flood"

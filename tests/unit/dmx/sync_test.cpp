@@ -84,13 +84,20 @@ TEST(Sync, SacnFallsBackToImmediateAfterTheTimeoutUnlessForced) {
   }
 }
 
-TEST(Sync, StreamTerminatedIsNotHeld) {
+// Stream_Terminated is not held, and takes the source's held frames with it: a later sync
+// packet must not bring the source back.
+TEST(Sync, StreamTerminatedIsNotHeldAndDropsWhatWasHeld) {
   const test::TestShow t = test::makeTestShow();
   DmxInput input(t.show, t.profiles);
   input.receive(DmxProtocol::Sacn, sacnLevel(1, 100, 1, 0), kLocalhost, 1, 0.0);
   input.receive(DmxProtocol::Sacn, test::sacnSync(9), kLocalhost, 1, 0.0);
-  input.receive(DmxProtocol::Sacn, sacnLevel(1, 0, 2, 9, kSacnOptionTerminated), kLocalhost, 1, 0.1);
+  input.receive(DmxProtocol::Sacn, sacnLevel(1, 50, 2, 9), kLocalhost, 1, 0.05);  // held
+  input.receive(DmxProtocol::Sacn, sacnLevel(1, 0, 3, 9, kSacnOptionTerminated), kLocalhost, 1, 0.1);
   EXPECT_TRUE(input.sources().empty());
+  EXPECT_EQ(input.stats().superseded, 1u);
+  input.receive(DmxProtocol::Sacn, test::sacnSync(9), kLocalhost, 1, 0.2);
+  EXPECT_TRUE(input.sources().empty());
+  EXPECT_EQ(input.syncGate().heldCount(), 0u);
 }
 
 TEST(Sync, ArtSyncHoldsArtDmxUntilTheNextAndLapsesAfter4s) {
