@@ -174,6 +174,8 @@ int runLive(const Args& args) {
   else if (quality == "reference") render.quality = Quality::Reference;
   else return fail("--quality '" + quality + "' is not one of draft|default|high|reference");
   if (!artNet && !sacn) artNet = sacn = true;
+  if (oscPort > 0 && ((artNet && oscPort == artNetPort) || (sacn && oscPort == sacnPort)))
+    return fail("--osc " + std::to_string(oscPort) + " is the Art-Net or sACN port; expected a port of its own (e.g. 9000)");
   if (timecode && !artNet) return fail("--timecode reads ArtTimeCode, which comes over Art-Net; drop --sacn or add --artnet");
   if (!recordLabel.empty() && recordCue.empty()) return fail("--label names the cue --record-cue records; give --record-cue N");
   if (!recordCue.empty() && !isCueNumber(recordCue))

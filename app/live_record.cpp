@@ -2,6 +2,8 @@
 // same as one recorded by hand.
 #include "app/live_record.h"
 
+#include <algorithm>
+
 #include "shows/cue_number.h"
 #include "shows/edit/edit_commands.h"
 #include "shows/show_save.h"
@@ -55,14 +57,14 @@ Result<std::string> recordLiveCue(Show& show, const ProfileSet& profiles, const 
   if (exists && !r.label.empty()) {
     if (Status s = labelCue(listName, r.number, r.label)->apply(target); !s) return s.error();
   }
+  // The list the cue went into (recordCue makes "Main" when the show had none).
+  const CueList& into = listName.empty() ? show.cueLists.front() : *std::find_if(show.cueLists.begin(), show.cueLists.end(),
+                                                                                [&](const CueList& l) { return l.name == listName; });
   size_t values = 0;
-  for (const CueList& l : show.cueLists)
-    if (l.name == listName || (listName.empty() && &l == &show.cueLists.front()))
-      for (const Cue& c : l.cues)
-        if (compareCueNumbers(c.number, r.number) == 0)
-          for (const auto& [id, v] : c.values)
-            values += v.intensity.has_value() + v.panDeg.has_value() + v.tiltDeg.has_value() + v.color.has_value() +
-                      v.zoomDeg.has_value() + v.gobo.has_value() + v.goboRotationDeg.has_value() + v.iris.has_value();
+  if (auto at = findCue(into, r.number))
+    for (const auto& [id, v] : into.cues[*at].values)
+      values += v.intensity.has_value() + v.panDeg.has_value() + v.tiltDeg.has_value() + v.color.has_value() +
+                v.zoomDeg.has_value() + v.gobo.has_value() + v.goboRotationDeg.has_value() + v.iris.has_value();
   const std::filesystem::path file = show.file;
   if (Status s = saveShow(show, file); !s) return s.error();
   return std::string(exists ? "updated" : "recorded") + " cue " + r.number + " from " + std::to_string(fixtures.size()) +

@@ -22,6 +22,12 @@ if ! command -v oscsend >/dev/null; then
   exit 0
 fi
 
+# OSC on the Art-Net port would share it (SO_REUSEPORT) and split the datagrams: refused.
+if "$HAZE" live "$ROOT/tests/data/live/cues.haze.json" --osc 6454 --duration 1 2>"$TMP/err"; then
+  fail "--osc on the Art-Net port was accepted"
+fi
+grep -q "expected a port of its own" "$TMP/err" || fail "no clear message for --osc on the Art-Net port"
+
 "$HAZE" live "$ROOT/tests/data/live/cues.haze.json" --sacn --sacn-port 0 --osc 0 \
   --state-json "$TMP/state.json" 2>"$TMP/err" &
 HAZE_PID=$!

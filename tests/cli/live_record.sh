@@ -69,6 +69,11 @@ stop_haze() {
   SEND_PID=""
 }
 
+# 0. A cue number that is not one is refused before anything runs.
+"$HAZE" live "$SHOW" --sacn --sacn-port 0 --duration 0.2 --record-cue 1.2.3 2>"$TMP/err" &&
+  fail "--record-cue 1.2.3 was accepted"
+grep -q "is not a cue number" "$TMP/err" || fail "no clear message for a bad --record-cue"
+
 # 1. Record cue 10.
 cp "$SHOW" "$TMP/before.json"
 start_haze --record-cue 10 --label "from the desk"
