@@ -75,6 +75,7 @@ struct Cue {
   double fadeS = 0.0;
   double delayS = 0.0;
   std::optional<double> followS;  // empty = wait for the operator
+  std::string timecode;           // "hh:mm:ss:ff": `haze live --timecode` fires it then; "" = none
   std::map<int, CueValues> values;  // by fixture id
 };
 

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "shows/cue_number.h"
+#include "shows/timecode.h"
 #include "shows/show_json.h"
 
 namespace haze {
@@ -408,7 +409,7 @@ void readCueLists(Reader& r, const json& root, Show& show) {
           const std::string p = lp + "/cues/" + std::to_string(ci);
           Cue cue;
           if (r.isObject(c, p, "a cue")) {
-            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "values"});
+            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "timecode", "values"});
             if (r.stringMember(c, p, "number", true, "a cue number (a decimal string like \"1.5\")", cue.number, true) &&
                 !isCueNumber(cue.number)) {
               r.problem(p + "/number", "expected a cue number: digits with an optional decimal part, like \"1\" "
@@ -428,6 +429,12 @@ void readCueLists(Reader& r, const json& root, Show& show) {
                 r.problem(p + "/follow", std::string("expected a follow time in seconds (a number) or null, got ") +
                                              typeName(*j));
               }
+            }
+            if (r.stringMember(c, p, "timecode", false, "a timecode \"hh:mm:ss:ff\"", cue.timecode, false) &&
+                !cue.timecode.empty() && !parseTimecode(cue.timecode)) {
+              r.problem(p + "/timecode", "expected a timecode \"hh:mm:ss:ff\" within a day (hours 00..23, frames "
+                                         "00..29), got \"" + cue.timecode + "\"");
+              cue.timecode.clear();
             }
             if (const json* j = r.member(c, p, "values", false)) readValues(r, *j, p + "/values", cue);
           }

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "shows/cue_number.h"
+#include "shows/timecode.h"
 #include "shows/show_json.h"
 
 namespace haze {
@@ -198,6 +199,7 @@ struct Checker {
                                     std::to_string(it->second) + "; expected unique names");
       }
       std::optional<size_t> previous;  // the last cue with a readable number
+      std::optional<size_t> previousTimecode;  // the last cue with a timecode
       for (size_t ci = 0; ci < l.cues.size(); ++ci) {
         const Cue& c = l.cues[ci];
         const std::string p = lp + "/cues/" + std::to_string(ci);
@@ -214,6 +216,20 @@ struct Checker {
                                          "); expected numbers that increase down the list");
           }
           previous = ci;
+        }
+        // Timecode chases to the last cue at or before the time, so the times must rise with the list.
+        if (!c.timecode.empty()) {
+          const auto tc = parseTimecode(c.timecode);
+          if (!tc) {
+            problem(p + "/timecode", "\"" + c.timecode + "\" is not a timecode; expected \"hh:mm:ss:ff\" within a day");
+          } else if (previousTimecode) {
+            const Cue& b = l.cues[*previousTimecode];
+            if (auto tb = parseTimecode(b.timecode); tb && *tc <= *tb)
+              problem(p + "/timecode", "timecode " + c.timecode + " is not after cue \"" + b.number + "\"'s " + b.timecode +
+                                           " (" + lp + "/cues/" + std::to_string(*previousTimecode) +
+                                           "); expected timecodes that increase down the list");
+          }
+          if (tc) previousTimecode = ci;
         }
         values(p, c);
       }

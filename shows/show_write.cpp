@@ -153,6 +153,7 @@ ojson showJson(const Show& s) {
       o["fade"] = c.fadeS;
       o["delay"] = c.delayS;
       o["follow"] = c.followS ? ojson(*c.followS) : ojson(nullptr);
+      if (!c.timecode.empty()) o["timecode"] = c.timecode;
       ojson vals = ojson::object();
       for (const auto& [id, v] : c.values) vals[std::to_string(id)] = valuesJson(v);
       o["values"] = vals;
