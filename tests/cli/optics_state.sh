@@ -5,7 +5,7 @@
 # `haze validate` refuses optics the profile lacks; `haze fixture info --json` lists the optics.
 # Usage: optics_state.sh HAZE REPO
 set -uo pipefail
-haze=$1; root=$2
+haze=$1; root=$(cd "$2" && pwd)
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 pass=0; fail=0
 check() { if eval "$2"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: $1"; fi; }
@@ -34,7 +34,8 @@ cat >"$tmp/optics.haze.json" <<JSON
     { "number": "2", "values": { "1": { "shutter": { "strobe_hz": 10, "duty": 0.5 } } } },
     { "number": "3", "values": { "1": { "shutter": { "strobe_hz": 30, "duty": 0.25 } } } },
     { "number": "4", "values": { "1": { "shutter": "open", "prism": "3-facet", "prism_rotation": 30, "frost": 0.5,
-                                        "blades": [[0.2, 0.3], [0, 0], [0, 0], [0.1, 0.1]], "blade_rotation": 10 } } }
+                                        "blades": [[0.2, 0.3], [0, 0], [0, 0], [0.1, 0.1]], "blade_rotation": 10 } } },
+    { "number": "5", "values": { "1": { "intensity": 0 } } }
   ] } ]
 }
 JSON
@@ -66,10 +67,12 @@ check "cue 4's optics in haze state" 'node -e "
   process.exit(s.prism === \"3-facet\" && s.prism_rotation === 30 && s.frost === 0.5 && s.blades[0][1] === 0.3 &&
                s.blade_rotation === 10 && s.shutter === \"open\" ? 0 : 1)" "$tmp/state4.json"'
 
-# Stills: cue 3 (duty 0.25) against cue 1 (open), reference integrator, PFMs summed.
+# Stills: cue 3 (duty 0.25) against cue 1 (open), reference integrator, PFMs summed less the
+# dark cue 5 (the venue has emissive surfaces of its own).
 "$haze" render "$show" --cue 1 --width 64 --height 36 --quality reference -o "$tmp/open.pfm"
 "$haze" render "$show" --cue 3 --width 64 --height 36 --quality reference -o "$tmp/strobe.pfm"
-ratio=$(python3 - "$tmp/open.pfm" "$tmp/strobe.pfm" <<'PY'
+"$haze" render "$show" --cue 5 --width 64 --height 36 --quality reference -o "$tmp/dark.pfm"
+ratio=$(python3 - "$tmp/open.pfm" "$tmp/strobe.pfm" "$tmp/dark.pfm" <<'PY'
 import struct, sys
 def total(path):
     data = open(path, "rb").read()
@@ -77,7 +80,8 @@ def total(path):
     w, h = map(int, parts[1].split()); scale = float(parts[2])
     fmt = ("<" if scale < 0 else ">") + "f" * (3 * w * h)
     return sum(struct.unpack(fmt, parts[3][:12 * w * h]))
-a, b = total(sys.argv[1]), total(sys.argv[2])
+dark = total(sys.argv[3])
+a, b = total(sys.argv[1]) - dark, total(sys.argv[2]) - dark
 print("%.6f" % (b / a) if a > 0 else "nan")
 PY
 )
