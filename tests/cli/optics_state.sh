@@ -3,6 +3,7 @@
 # ten openings (docs/show-format.md: the gate runs on the playback clock from GO); a still of a
 # strobe of duty 0.25 holds a quarter of the open cue's light (docs/physics.md, "Strobe");
 # `haze validate` refuses optics the profile lacks; `haze fixture info --json` lists the optics.
+# The show is tests/data/shows/optics.haze.json.
 # Usage: optics_state.sh HAZE REPO
 set -uo pipefail
 haze=$1; root=$(cd "$2" && pwd)
@@ -10,36 +11,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 pass=0; fail=0
 check() { if eval "$2"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: $1"; fi; }
 
-cat >"$tmp/optics.haze.json" <<JSON
-{
-  "format": "haze-show", "version": 1,
-  "venue": { "gltf": "$root/examples/demo/venue/theatre.gltf" },
-  "atmosphere": { "scattering": 0.02 },
-  "cameras": [ { "name": "FOH", "position": [0, 5, 14], "target": [0, 1, 0], "fov_y": 40 } ],
-  "profiles": {
-    "spot": { "format": "haze-fixture", "version": 1, "name": "Optics spot",
-              "photometry": { "beam_angle": 12, "field_angle": 18, "peak_candela": 40000 },
-              "frost_max": 5, "blades": true,
-              "prisms": [ { "name": "3-facet", "facets": 3, "deflection": 10 } ],
-              "modes": [ { "name": "m", "channels": [ "Dimmer", "Shutter" ] } ] },
-    "par": { "format": "haze-fixture", "version": 1, "name": "Par",
-             "photometry": { "beam_angle": 20, "field_angle": 30, "peak_candela": 5000 } }
-  },
-  "fixtures": [
-    { "id": 1, "profile": "spot", "position": [0, 6, 0] },
-    { "id": 2, "profile": "par", "position": [3, 6, 0] }
-  ],
-  "cue_lists": [ { "name": "Main", "cues": [
-    { "number": "1", "values": { "1": { "intensity": 1 } } },
-    { "number": "2", "values": { "1": { "shutter": { "strobe_hz": 10, "duty": 0.5 } } } },
-    { "number": "3", "values": { "1": { "shutter": { "strobe_hz": 30, "duty": 0.25 } } } },
-    { "number": "4", "values": { "1": { "shutter": "open", "prism": "3-facet", "prism_rotation": 30, "frost": 0.5,
-                                        "blades": [[0.2, 0.3], [0, 0], [0, 0], [0.1, 0.1]], "blade_rotation": 10 } } },
-    { "number": "5", "values": { "1": { "intensity": 0 } } }
-  ] } ]
-}
-JSON
-show="$tmp/optics.haze.json"
+show="$root/tests/data/shows/optics.haze.json"
 "$haze" validate "$show" >"$tmp/validate.txt" 2>&1; rc=$?
 check "the optics show validates (exit $rc: $(head -3 "$tmp/validate.txt"))" '[ $rc -eq 0 ]'
 
@@ -90,7 +62,7 @@ check "a still of a duty-0.25 strobe holds 0.25 of the open light (got $ratio)" 
 
 # A profile without the optics: every optics value is refused at its place.
 sed 's/"1": { "intensity": 1 }/"2": { "frost": 0.5, "prism": "3-facet", "blades": [[0.5, 0.5], [0, 0], [0, 0], [0, 0]] }/' \
-  "$show" >"$tmp/bad.haze.json"
+  "$show" | sed 's|"../../../examples|"'"$root"'/examples|' >"$tmp/bad.haze.json"
 "$haze" validate "$tmp/bad.haze.json" >"$tmp/bad.txt" 2>&1; rc=$?
 check "validate refuses optics the par lacks (exit $rc: $(tr '\n' '|' <"$tmp/bad.txt"))" \
   '[ $rc -ne 0 ] && grep -q "values/2/frost" "$tmp/bad.txt" && grep -q "values/2/prism" "$tmp/bad.txt" && grep -q "values/2/blades" "$tmp/bad.txt"'
