@@ -24,7 +24,9 @@ constexpr const char* kUsage =
     "  --list NAME  the cue list (default: the first)\n"
     "  --follow     let follows fire after cue N, as on stage\n"
     "  --json       {\"<fixture id>\": {\"intensity\", \"pan\", \"tilt\", \"color\", \"zoom\", \"gobo\", "
-    "\"gobo_rotation\", \"iris\"}}\n";
+    "\"gobo_rotation\", \"iris\",\n"
+    "               \"frost\", \"prism\", \"prism_rotation\", \"blades\", \"blade_rotation\", \"shutter\",\n"
+    "               with --at also \"gate\": the shutter's opening (0..1) at that moment}}\n";
 
 }  // namespace
 
@@ -74,7 +76,9 @@ int runState(const Args& args) {
     state = stateAt(*show, *profiles, *list, *cue, atS);
   }
 
-  const nlohmann::ordered_json out = stageStateJson(*show, *profiles, state);
+  // The strobe runs on the playback clock, which starts at GO: --at is also the gate's time.
+  const bool atGiven = atS < 1e9;
+  const nlohmann::ordered_json out = stageStateJson(*show, *profiles, state, atGiven ? std::optional<double>(atS) : std::nullopt);
   if (json) {
     std::cout << out.dump(2) << "\n";
   } else {

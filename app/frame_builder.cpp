@@ -43,7 +43,7 @@ MediumState mediumState(const AtmosphereDef& def) {
 }
 
 Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, const StageState& state,
-                              const std::string& cameraName) {
+                              const std::string& cameraName, std::optional<FrameTime> time) {
   FrameState frame;
   if (!cameraName.empty()) {
     const CameraDef* found = nullptr;
@@ -69,16 +69,13 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
     const Profile& profile = *p->second;
     const auto s = state.find(f.id);
     const Attributes a = s != state.end() ? s->second : Attributes{};
-    if (a.intensity <= 0.0f) continue;  // a dark fixture adds nothing to any pixel
+    const float gate = time ? shutterAverage(a.shutter, time->timeS, time->timeS + time->exposureS) : shutterMean(a.shutter);
+    if (a.intensity * gate <= 0.0f) continue;  // a dark fixture adds nothing to any pixel
     BeamState b;
     b.fixtureId = f.id;
     b.pose = beamPose(f.position, f.rotationDeg, a.panDeg, a.tiltDeg, profile.lensOffset);
     b.optics = profile.optics(a);
-    uint64_t pk = kFnvBasis;
-    pk = hashValue(pk, b.pose.lensPosition);
-    pk = hashValue(pk, b.pose.zb);
-    pk = hashValue(pk, b.pose.xb);
-    b.poseKey = pk;
+    b.optics.dimmer *= gate;
     uint64_t ok = kFnvBasis;
     ok = hashValue(ok, b.optics.distribution.get());
     ok = hashValue(ok, b.optics.profileFieldAngleDeg);
@@ -86,8 +83,22 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
     ok = hashValue(ok, b.optics.gobo.get());
     ok = hashValue(ok, b.optics.goboRotationDeg);
     ok = hashValue(ok, b.optics.iris);
+    ok = hashValue(ok, b.optics.blades);
     b.opticsKey = ok;
-    frame.beams.push_back(std::move(b));
+    // A prism: one beam per facet, each with 1/N of the light (the copies share one light map).
+    const PrismSpec* prism = profile.findPrism(a.prism);
+    const std::vector<BeamPose> poses = prism ? prismCopies(b.pose, *prism, a.prismRotationDeg) : std::vector<BeamPose>{b.pose};
+    b.optics.dimmer /= static_cast<float>(poses.size());
+    for (const BeamPose& pose : poses) {
+      BeamState copy = b;
+      copy.pose = pose;
+      uint64_t pk = kFnvBasis;
+      pk = hashValue(pk, copy.pose.lensPosition);
+      pk = hashValue(pk, copy.pose.zb);
+      pk = hashValue(pk, copy.pose.xb);
+      copy.poseKey = pk;
+      frame.beams.push_back(std::move(copy));
+    }
   }
   return frame;
 }

@@ -66,6 +66,11 @@ struct CueValues {
   std::optional<float> intensity, panDeg, tiltDeg, zoomDeg, goboRotationDeg, iris;
   std::optional<glm::vec3> color;
   std::optional<std::string> gobo;
+  // Beam optics beyond the gobo (docs/show-format.md).
+  std::optional<float> frost, prismRotationDeg, bladeRotationDeg;
+  std::optional<std::string> prism;
+  std::optional<BladeInsertions> blades;
+  std::optional<Shutter> shutter;
   bool operator==(const CueValues&) const = default;
 };
 

@@ -184,7 +184,27 @@ struct Checker {
         problem(vp + "/gobo", "profile \"" + f->profile + "\" has no gobo slot \"" + *v.gobo +
                                   "\" on its first gobo wheel; expected one of: " + joinNames(slots));
       }
+      optics(vp, v, *prof, f->profile);
     }
+  }
+
+  // The optics a profile must declare (docs/show-format.md): a cue cannot set what it lacks.
+  void optics(const std::string& vp, const CueValues& v, const Profile& prof, const std::string& name) {
+    if (v.frost && *v.frost > 0.0f && !prof.hasFrost)
+      problem(vp + "/frost", "profile \"" + name + "\" has no frost; expected no frost value (or 0)");
+    if (v.prism && *v.prism != "Open" && !prof.findPrism(*v.prism)) {
+      std::vector<std::string> names{"\"Open\""};
+      for (const PrismSpec& p : prof.prisms) names.push_back("\"" + p.name + "\"");
+      problem(vp + "/prism", "profile \"" + name + "\" has no prism \"" + *v.prism + "\"; expected one of: " + joinNames(names));
+    }
+    if (v.prismRotationDeg && prof.prisms.empty())
+      problem(vp + "/prism_rotation", "profile \"" + name + "\" has no prism; expected no prism_rotation");
+    const bool bladesIn = v.blades && std::any_of(v.blades->begin(), v.blades->end(),
+                                                  [](const glm::vec2& e) { return e.x > 0.0f || e.y > 0.0f; });
+    if (bladesIn && !prof.hasBlades)
+      problem(vp + "/blades", "profile \"" + name + "\" has no framing blades; expected no blades (or all [0, 0])");
+    if (v.bladeRotationDeg && !prof.hasBlades)
+      problem(vp + "/blade_rotation", "profile \"" + name + "\" has no framing blades; expected no blade_rotation");
   }
 
   void cueLists() {

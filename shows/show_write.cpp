@@ -84,6 +84,16 @@ ojson valuesJson(const CueValues& v) {
   if (v.gobo) o["gobo"] = *v.gobo;
   if (v.goboRotationDeg) o["gobo_rotation"] = tidy(*v.goboRotationDeg);
   if (v.iris) o["iris"] = tidy(*v.iris);
+  if (v.frost) o["frost"] = tidy(*v.frost);
+  if (v.prism) o["prism"] = *v.prism;
+  if (v.prismRotationDeg) o["prism_rotation"] = tidy(*v.prismRotationDeg);
+  if (v.blades) {
+    ojson blades = ojson::array();
+    for (const glm::vec2& ends : *v.blades) blades.push_back(ojson::array({tidy(ends.x), tidy(ends.y)}));
+    o["blades"] = blades;
+  }
+  if (v.bladeRotationDeg) o["blade_rotation"] = tidy(*v.bladeRotationDeg);
+  if (v.shutter) o["shutter"] = shutterJson(*v.shutter);
   return o;
 }
 
@@ -166,6 +176,15 @@ ojson showJson(const Show& s) {
 }
 
 }  // namespace
+
+nlohmann::ordered_json shutterJson(const Shutter& s) {
+  if (!s.strobing()) return s.mode == ShutterMode::Closed ? "closed" : "open";
+  ojson o = ojson::object();
+  o["strobe_hz"] = tidy(s.rateHz);
+  o["duty"] = tidy(s.duty);
+  if (s.mode != ShutterMode::Strobe) o["mode"] = shutterModeName(s.mode);
+  return o;
+}
 
 double tidy(float f) {
   char buf[64];
