@@ -67,11 +67,14 @@ void main() {
     // As many as the planes the piece spans (not a count that depends on the jitter: that
     // biases the strata).
     int n = max(int(round((piece.y - piece.x) / dz)), minN);
-    float phi0 = atan(piece.x * len - tc, D), phi1 = atan(piece.y * len - tc, D);
-    float dphi = (phi1 - phi0) / float(n);
-    // tan(phi) from one step to the next by the addition theorem (a division instead of a
-    // tan per sample: the walk costs what equal depth steps cost).
-    float T = tan(phi0 + xi * dphi), tau = tan(dphi);
+    // tan(phi) at the piece's ends is (t - t_c) / D; the angle between them is one arctangent
+    // of the tangents' difference (atan2 keeps it right past 90 degrees), and tan(phi) goes from
+    // one step to the next by the addition theorem (a division instead of a tan per sample:
+    // the walk costs what equal depth steps cost).
+    float T0 = (piece.x * len - tc) / D, T1 = (piece.y * len - tc) / D;
+    float dphi = atan(T1 - T0, 1.0 + T0 * T1) / float(n);
+    float tau = tan(dphi), tx = tan(xi * dphi);
+    float T = (T0 + tx) / (1.0 - T0 * tx);
     vec3 Lp = vec3(0.0);
     for (int k = 0; k < n; ++k) {
       Lp += scatterAt(b, ray, (tc + D * T) / len) * (1.0 + T * T);
