@@ -22,6 +22,17 @@ void printText(const nlohmann::ordered_json& f) {
             << "  symmetry " << f["symmetry"].get<std::string>() << ", grid " << f["grid"]["gamma"].get<int>() << " gamma x "
             << f["grid"]["c"].get<int>() << " C\n"
             << "  lens radius " << num("lens_radius") << " m (" << f["lens_radius_source"].get<std::string>() << ")\n";
+  // Beam optics beyond the gobo.
+  if (!f["frost"].is_null()) std::cout << "  frost up to " << f["frost"]["max"].get<double>() << " deg\n";
+  for (const auto& p : f["prisms"])
+    std::cout << "  prism \"" << p["name"].get<std::string>() << "\": " << p["facets"].get<int>() << " facets"
+              << (p["linear"].get<bool>() ? " linear" : "") << ", " << p["deflection"].get<double>() << " deg\n";
+  if (f["blades"].get<bool>()) std::cout << "  framing blades\n";
+  if (!f["shutter"].is_null()) {
+    std::cout << "  shutter";
+    for (const auto& m : f["shutter"]["modes"]) std::cout << " " << m.get<std::string>();
+    std::cout << " (up to " << f["shutter"]["max_hz"].get<double>() << " Hz)\n";
+  }
 }
 
 }  // namespace
@@ -41,6 +52,8 @@ int runFixture(const Args& args) {
     std::cerr << profile.error().str() << "\n";
     return 1;
   }
+  // What reading the profile clamped (prisms, frost beyond haze's ranges) is said, not dropped.
+  for (const std::string& w : (*profile)->warnings) std::cerr << "warning: " << w << "\n";
   nlohmann::ordered_json facts = fixtureFacts(**profile);
   if (json)
     std::cout << facts.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";

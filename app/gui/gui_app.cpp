@@ -221,6 +221,15 @@ struct ViewportRenderers {
   }
 };
 
+// A strobe slow enough for the eye to see it flash: such a stage is drawn at the clock, frame by
+// frame; faster strobes are drawn at their mean, as a still shows them (docs/physics.md, "Strobe").
+constexpr float kMaxFlashHz = 15.0f;
+bool flashing(const StageState& stage) {
+  for (const auto& [id, a] : stage)
+    if (a.intensity > 0.0f && a.shutter.strobing() && a.shutter.rateHz <= kMaxFlashHz) return true;
+  return false;
+}
+
 // What makes the stage change between frames: the view and the document's edits.
 struct ChangeWatch {
   Orbit orbit{};
@@ -247,10 +256,14 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   const auto t0 = std::chrono::steady_clock::now();
   // Edits made this frame show this frame.
   if (!gui.live && gui.doc->revision() != watch.revision) gui.stage = gui.doc->stageState(gui.nowS);
-  auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "");
+  // Each flashing frame shows the shutter's mean over about one frame's time.
+  const bool flash = flashing(gui.stage);
+  const double exposureS = std::clamp(gui.frameMs / 1000.0, 1.0 / 120.0, 0.1);
+  auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "",
+                               flash ? std::optional<FrameTime>(FrameTime{gui.nowS, exposureS}) : std::nullopt);
   if (!frameState) return frameState.error();
   frameState->camera = gui.cameraState();
-  const bool changing = watch.changing(gui);
+  const bool changing = watch.changing(gui) || flash;
   glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   Renderer* r = nullptr;

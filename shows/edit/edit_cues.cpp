@@ -54,6 +54,12 @@ void compareField(const Attributes& before, const CueValues& p, Same same, Diffe
   check(&CueValues::iris, p.iris, p.iris && *p.iris == before.iris);
   check(&CueValues::color, p.color, p.color && *p.color == before.color);
   check(&CueValues::gobo, p.gobo, p.gobo && *p.gobo == before.gobo);
+  check(&CueValues::frost, p.frost, p.frost && *p.frost == before.frost);
+  check(&CueValues::prism, p.prism, p.prism && *p.prism == before.prism);
+  check(&CueValues::prismRotationDeg, p.prismRotationDeg, p.prismRotationDeg && *p.prismRotationDeg == before.prismRotationDeg);
+  check(&CueValues::blades, p.blades, p.blades && *p.blades == before.blades);
+  check(&CueValues::bladeRotationDeg, p.bladeRotationDeg, p.bladeRotationDeg && *p.bladeRotationDeg == before.bladeRotationDeg);
+  check(&CueValues::shutter, p.shutter, p.shutter && *p.shutter == before.shutter);
 }
 
 // Applies `fold` to one fixture: programmer values that differ from `before` are set in `cue`,

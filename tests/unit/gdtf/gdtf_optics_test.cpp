@@ -110,7 +110,8 @@ std::string bladeFixture() {
   std::string channels = plain(1, "Dimmer", "0", "1");
   int offset = 2;
   for (int k = 1; k <= 4; ++k)
-    for (const char* end : {"A", "B"}) channels += plain(offset++, "Blade" + std::to_string(k) + end, "0", "1");
+    for (const char* end : {"A", "B"})  // Blade4B in percent, which haze clamps to 0..1 and says so
+      channels += plain(offset++, "Blade" + std::to_string(k) + end, "0", k == 4 && end[0] == 'B' ? "100" : "1");
   channels += plain(offset++, "ShaperRot", "-45", "45");
   channels += channel(offset++, "Prism1", R"(<ChannelFunction Attribute="Prism1" DMXFrom="0/1" Wheel="P">
               <ChannelSet DMXFrom="0/1" Name="Open" WheelSlotIndex="1"/>
@@ -146,6 +147,9 @@ TEST(GdtfOptics, ReadsFramingBladesAndClampsAPrismOfFortyFacets) {
   EXPECT_EQ(p.prisms[0].facets, kMaxPrismFacets);
   ASSERT_FALSE(p.warnings.empty());
   EXPECT_NE(p.warnings[0].find("40 facets; clamped to 24"), std::string::npos) << p.warnings[0];
+  ASSERT_EQ(p.warnings.size(), 2u);
+  EXPECT_NE(p.warnings[1].find("Blade4B runs from 0.000000 to 100.000000; haze clamps it to 0..1"), std::string::npos)
+      << p.warnings[1];
   const DmxMode& m = p.modes.at(0);
   std::vector<uint8_t> dmx(m.channels.size(), 0);
   dmx[0] = 255;
@@ -159,6 +163,8 @@ TEST(GdtfOptics, ReadsFramingBladesAndClampsAPrismOfFortyFacets) {
   EXPECT_FLOAT_EQ(a.blades[1].y, 0.2f);
   EXPECT_FLOAT_EQ(a.bladeRotationDeg, 45.0f);
   EXPECT_EQ(a.prism, "Many");
+  dmx[8] = 128;  // Blade4B at 50 "percent": all the way in once clamped
+  EXPECT_FLOAT_EQ(decodeDmx(p, m, dmx).blades[3].y, 1.0f);
   std::filesystem::remove_all(dir);
 }
 
