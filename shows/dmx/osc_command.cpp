@@ -23,16 +23,24 @@ struct MessageFree {
 };
 using Message = std::unique_ptr<std::remove_pointer_t<lo_message>, MessageFree>;
 
-// A numeric argument of any OSC number type.
-std::optional<double> number(char type, lo_arg* a) {
+// A numeric argument of any OSC number type. liblo's arguments sit on 4-byte boundaries while
+// lo_arg (it holds 64-bit members) wants 8, so they are copied out rather than read in place.
+template <typename T>
+T read(const lo_arg* a) {
+  T v;
+  std::memcpy(&v, reinterpret_cast<const unsigned char*>(a), sizeof v);
+  return v;
+}
+std::optional<double> number(char type, const lo_arg* a) {
   switch (type) {
-    case 'i': return a->i;
-    case 'h': return static_cast<double>(a->h);
-    case 'f': return a->f;
-    case 'd': return a->d;
+    case 'i': return read<int32_t>(a);
+    case 'h': return static_cast<double>(read<int64_t>(a));
+    case 'f': return read<float>(a);
+    case 'd': return read<double>(a);
     default: return std::nullopt;
   }
 }
+const char* text(const lo_arg* a) { return reinterpret_cast<const char*>(a); }
 
 std::vector<std::string> split(const std::string& address) {
   std::vector<std::string> parts;
@@ -84,7 +92,7 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
     if (argc != 1) return fail(r.address + " takes one argument, the cue number");
     std::string cue;
     if (t[0] == 's' || t[0] == 'S') {
-      cue = &argv[0]->s;
+      cue = text(argv[0]);
     } else if (auto v = number(t[0], argv[0]); v && *v >= 0 && *v < 1e9 && std::isfinite(*v)) {
       // A float cue number is taken to at most 3 decimals ("1.5"; 1.4999999 is 1.5).
       char text[32];
@@ -146,7 +154,7 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
     } else if (attr == "gobo") {
       expected = "one string, the gobo's name";
       if (argc == 1 && (t[0] == 's' || t[0] == 'S')) {
-        v.gobo = std::string(&argv[0]->s);
+        v.gobo = std::string(text(argv[0]));
         good = true;
       }
     } else {
