@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "app/progress.h"
+#include "renderer/output/caption.h"
 #include "renderer/output/exr.h"
 #include "renderer/output/video_writer.h"
 #include "renderer/scene/image.h"
@@ -118,6 +119,17 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
       lastState = std::move(state);
       ++drawn;
     }
+    std::vector<unsigned char> shown;
+    if (!exr && job.caption) {
+      shown = rgb;
+      char text[256];
+      const auto current = player.currentCue();
+      const Cue& cue = list.cues[current.value_or(job.from)];
+      std::snprintf(text, sizeof text, "cue %s%s%s   %.2f s", cue.number.c_str(), cue.label.empty() ? "" : "  ",
+                    cue.label.c_str(), t);
+      burnCaption(shown, options.width, options.height, text);
+    }
+    const std::vector<unsigned char>& frame = job.caption ? shown : rgb;
     if (exr) {
       const Cue& cue = list.cues[player.currentCue().value_or(job.from)];
       char comment[256];
@@ -128,8 +140,8 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
           !s)
         return s.error();
     } else if (sequence) {
-      if (Status s = writePng8(rgb, options.width, options.height, sequenceFile(job.out, f)); !s) return s.error();
-    } else if (Status s = writer->addFrame(rgb); !s) {
+      if (Status s = writePng8(frame, options.width, options.height, sequenceFile(job.out, f)); !s) return s.error();
+    } else if (Status s = writer->addFrame(frame); !s) {
       return s.error();
     }
     progress.step(f + 1);

@@ -21,6 +21,7 @@ struct VideoJob {
   std::string codec = "libx264";
   std::filesystem::path out;
   bool progress = false;    // --progress: report even when stderr is not a terminal
+  bool caption = false;     // burn "cue N label, t s" into video and PNG frames
 };
 
 // True when `out` names an image sequence: a printf-style frame number (%d, %05d) and .png or

@@ -2,7 +2,7 @@
 # `haze render --video`: 3 s of the demo's fade from cue 1 into cue 2 at 320x180, decoded by
 # FFmpeg's command-line tools (not haze): frame count, size, frame rate, codec, and the frame at
 # 1.5 s against the still `haze render --cue 2 --at 1.5` within the codec's error (PSNR > 35 dB,
-# measured 39.7 dB). Image sequences (PNG bit-exact with the still, EXR against the PFM). Bad
+# measured 39.5 dB). Image sequences (PNG bit-exact with the still, EXR against the PFM). Bad
 # input (unwritable path, missing cue, missing codec, Ctrl-C): one line, non-zero exit, and no
 # file under the final name.
 set -uo pipefail
@@ -42,6 +42,14 @@ check "PNG frame 1 is the still at 0.25 s" 'cmp -s "$tmp/seq-00001.png" "$tmp/st
 "$haze" render "$show" --video "$tmp/delay-%d.png" --from 3 --to 3 --duration 1 --fps 2 "${size[@]}" >/dev/null
 "$haze" render "$show" --cue 3 --at 0.5 "${size[@]}" -o "$tmp/still3.png"
 check "a repeated frame of a delay is the still of its moment" 'cmp -s "$tmp/delay-1.png" "$tmp/still3.png"'
+# --caption: the band in the bottom-left (captionBand: 192x12 at 320x180) carries white text on
+# a dark ground; every pixel above it is the uncaptioned frame's.
+"$haze" render "$show" --video "$tmp/cap-%05d.png" --from 2 --to 2 --duration 0.5 --fps 4 --caption "${size[@]}" >/dev/null
+convert "$tmp/cap-00001.png" -crop 320x168+0+0 +repage "$tmp/cap-top.png"
+convert "$tmp/still025.png" -crop 320x168+0+0 +repage "$tmp/still-top.png"
+check "caption: the frame above the band is untouched" '[ "$(compare -metric AE "$tmp/cap-top.png" "$tmp/still-top.png" null: 2>&1)" = 0 ]'
+white=$(convert "$tmp/cap-00001.png" -crop 192x12+0+168 +repage -colorspace gray -format "%[fx:maxima]" info:)
+check "caption: white text in the band (brightest $white > 0.9)" 'awk -v m="$white" "BEGIN { exit !(m > 0.9) }"'
 "$haze" render "$show" --video "$tmp/seq-%03d.exr" --from 2 --to 2 --duration 0.25 --fps 4 --width 64 --height 36 >/dev/null
 "$haze" render "$show" --cue 2 --at 0 --width 64 --height 36 -o "$tmp/still0.pfm"
 ffmpeg -v error -i "$tmp/seq-000.exr" -f rawvideo -pix_fmt gbrpf32le -y "$tmp/seq-000.raw"
