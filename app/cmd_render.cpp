@@ -26,6 +26,7 @@ constexpr const char* kUsage =
     "                   -o OUT.png|OUT.pfm|OUT.exr (one image) | -o DIR/ (with --all-cues)\n"
     "       haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--list NAME] [--from CUE] [--to CUE]\n"
     "                   [--fps N] [--hold S] [--duration S] [--codec NAME] [--caption] [--progress]\n"
+    "                   [--timeline FILE.json]\n"
     "                   (and the options above)\n"
     "Without --cue the first cue is rendered; --at S renders S seconds after its GO.\n"
     "PNGs are metered like a camera (auto, the default) and --exposure EV is an offset from the\n"
@@ -38,7 +39,8 @@ constexpr const char* kUsage =
     "follows fire by themselves, after a cue without one the operator waits --hold S (default 2)\n"
     "after its fade, then GOes. --duration S cuts the video at S seconds. H.264 (libx264) in MP4 at\n"
     "--fps N (default 25); a name with %05d writes one PNG or EXR per frame instead. --caption burns\n"
-    "the cue number, label and time into video and PNG frames (never into EXRs).\n"
+    "the cue number, label and time into video and PNG frames (never into EXRs). --timeline FILE.json\n"
+    "gives the GO times: {\"go\": [{\"cue\": \"1\", \"at\": 0}, {\"cue\": \"2\", \"at\": 8.5}], \"end\": 20}.\n"
     "--progress reports progress on stderr even when it is not a terminal (it always is on one).\n";
 
 std::string secondsText(double s) {
@@ -54,7 +56,7 @@ int runRender(const Args& args) {
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
   bool allCues = false, progress = false, caption = false;
-  std::string video, from, to, codec = "libx264";
+  std::string video, from, to, codec = "libx264", timelineFile;
   double hold = 2.0, duration = 0.0;
   int fps = 25;
   CommandLine cli("haze render", kUsage);
@@ -80,6 +82,7 @@ int runRender(const Args& args) {
       .text("--codec", codec, "an FFmpeg encoder name")
       .flag("--progress", progress)
       .flag("--caption", caption)
+      .text("--timeline", timelineFile, "a JSON file of GO times")
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
   const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
@@ -117,6 +120,12 @@ int runRender(const Args& args) {
       auto found = findCue(*cueList, *number);
       if (!found) return fail(showPath + ": " + found.error().message);
       *index = *found;
+    }
+    if (!timelineFile.empty()) {
+      if (!from.empty() || !to.empty()) return fail("--timeline gives the GOs itself: no --from or --to with it");
+      auto timeline = readTimeline(timelineFile, *cueList, hold);
+      if (!timeline) return fail(timeline.error().str());
+      job.timeline = std::move(*timeline);
     }
     if (job.from > job.to)
       return fail("--from " + cueList->cues[job.from].number + " comes after --to " + cueList->cues[job.to].number +

@@ -56,6 +56,18 @@ ffmpeg -v error -i "$tmp/seq-000.exr" -f rawvideo -pix_fmt gbrpf32le -y "$tmp/se
 python3 "$root/tests/cli/exr_vs_pfm.py" "$tmp/seq-000.exr" "$tmp/seq-000.raw" "$tmp/still0.pfm" half >"$tmp/exrcheck" 2>&1; rc=$?
 check "EXR frame 0 is the PFM at 0 s: $(tail -n 1 "$tmp/exrcheck")" '[ $rc -eq 0 ] && grep -q "frame 0 at 0.000 s, cue 2" "$tmp/exrcheck"'
 
+# --timeline: GO cue 2 at 0, then cue 4 at 0.5 s: frame 0 is cue 2's start, frame 2 (1 s) is no
+# longer cue 2's fade at 1 s but cue 4 fading in.
+echo '{"go": [{"cue": "2", "at": 0}, {"cue": "4", "at": 0.5}], "end": 1.5}' >"$tmp/timeline.json"
+"$haze" render "$show" --video "$tmp/tl-%d.png" --timeline "$tmp/timeline.json" --fps 2 "${size[@]}" >/dev/null
+"$haze" render "$show" --cue 2 --at 0 "${size[@]}" -o "$tmp/c2at0.png"
+"$haze" render "$show" --cue 2 --at 1 "${size[@]}" -o "$tmp/c2at1.png"
+check "timeline: 3 frames for end 1.5 s at 2 fps" '[ "$(ls "$tmp"/tl-*.png | wc -l)" -eq 3 ]'
+check "timeline: frame 0 is cue 2 at 0 s" 'cmp -s "$tmp/tl-0.png" "$tmp/c2at0.png"'
+check "timeline: frame 2 is not cue 2 at 1 s (cue 4 was GOne at 0.5 s)" '! cmp -s "$tmp/tl-2.png" "$tmp/c2at1.png"'
+echo '{"go": [{"cue": "2", "at": 1}, {"cue": "3", "at": 0.5}]}' >"$tmp/backwards.json"
+echo '{"go": [{"cue": "77", "at": 0}]}' >"$tmp/nocue.json"
+
 expect_error() {  # name, expected text, final file that must not exist, command...
   local name=$1 want=$2 file=$3; shift 3
   "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
@@ -74,6 +86,11 @@ expect_error missing-codec "no-such-encoder" "$tmp/x.mp4" \
   "$haze" render "$show" --video "$tmp/x.mp4" --codec no-such-encoder --duration 0.1 "${size[@]}"
 expect_error odd-size "even width" "$tmp/x.mp4" "$haze" render "$show" --video "$tmp/x.mp4" --duration 0.1 --width 33 --height 18
 expect_error bad-pattern "one frame number" "$tmp/y-0-0.png" "$haze" render "$show" --video "$tmp/y-%d-%d.png" --duration 0.1 "${size[@]}"
+
+expect_error timeline-backwards "backwards.json:/go/1/at" "$tmp/x.mp4" \
+  "$haze" render "$show" --video "$tmp/x.mp4" --timeline "$tmp/backwards.json" "${size[@]}"
+expect_error timeline-no-cue 'nocue.json:/go/0/cue.*"77"' "$tmp/x.mp4" \
+  "$haze" render "$show" --video "$tmp/x.mp4" --timeline "$tmp/nocue.json" "${size[@]}"
 
 # Ctrl-C in the middle: the render stops between frames, says so, and removes its temporary file.
 "$haze" render "$show" --video "$tmp/long.mp4" --duration 60 --fps 12 "${size[@]}" >/dev/null 2>"$tmp/err" &
