@@ -25,7 +25,8 @@ constexpr const char* kUsage =
     "                   [--exposure-mode auto|manual] [--bloom F] [--exr-pixel half|float]\n"
     "                   -o OUT.png|OUT.pfm|OUT.exr (one image) | -o DIR/ (with --all-cues)\n"
     "       haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--list NAME] [--from CUE] [--to CUE]\n"
-    "                   [--fps N] [--hold S] [--duration S] [--codec NAME] [--progress] (and the options above)\n"
+    "                   [--fps N] [--hold S] [--duration S] [--codec NAME] [--caption] [--progress]\n"
+    "                   [--timeline FILE.json] (and the options above)\n"
     "Without --cue the first cue is rendered; --at S renders S seconds after its GO.\n"
     "PNGs are metered like a camera (auto, the default) and --exposure EV is an offset from the\n"
     "metered exposure; with --exposure-mode manual it is absolute (EV 0: 50 cd/m^2 maps to 1).\n"
@@ -36,7 +37,9 @@ constexpr const char* kUsage =
     "--video plays cues --from..--to (default: the whole list) as on stage: GO on the first at 0 s,\n"
     "follows fire by themselves, after a cue without one the operator waits --hold S (default 2)\n"
     "after its fade, then GOes. --duration S cuts the video at S seconds. H.264 (libx264) in MP4 at\n"
-    "--fps N (default 25); a name with %05d writes one PNG or EXR per frame instead.\n"
+    "--fps N (default 25); a name with %05d writes one PNG or EXR per frame instead. --caption burns\n"
+    "the cue number, label and time into video and PNG frames (never into EXRs). --timeline FILE.json\n"
+    "gives the GO times: {\"go\": [{\"cue\": \"1\", \"at\": 0}, {\"cue\": \"2\", \"at\": 8.5}], \"end\": 20}.\n"
     "--progress reports progress on stderr even when it is not a terminal (it always is on one).\n";
 
 std::string secondsText(double s) {
@@ -51,8 +54,8 @@ int runRender(const Args& args) {
   std::string showPath, cue, list, out, camera, quality = "default", exposureMode, exrPixel = "half";
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
-  bool allCues = false, progress = false;
-  std::string video, from, to, codec = "libx264";
+  bool allCues = false, progress = false, caption = false;
+  std::string video, from, to, codec = "libx264", timelineFile;
   double hold = 2.0, duration = 0.0;
   int fps = 25;
   CommandLine cli("haze render", kUsage);
@@ -77,6 +80,8 @@ int runRender(const Args& args) {
       .number("--duration", duration, 0, 86400, "seconds 0..86400")
       .text("--codec", codec, "an FFmpeg encoder name")
       .flag("--progress", progress)
+      .flag("--caption", caption)
+      .text("--timeline", timelineFile, "a JSON file of GO times")
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
   const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
@@ -108,12 +113,18 @@ int runRender(const Args& args) {
 
   if (!video.empty()) {
     VideoJob job{.list = cueList, .from = 0, .to = cueList->cues.size() - 1, .holdS = hold, .durationS = duration,
-                 .fps = fps, .codec = codec, .out = video, .progress = progress};
+                 .fps = fps, .codec = codec, .out = video, .progress = progress, .caption = caption};
     for (auto [number, index] : {std::pair{&from, &job.from}, std::pair{&to, &job.to}}) {
       if (number->empty()) continue;
       auto found = findCue(*cueList, *number);
       if (!found) return fail(showPath + ": " + found.error().message);
       *index = *found;
+    }
+    if (!timelineFile.empty()) {
+      if (!from.empty() || !to.empty()) return fail("--timeline gives the GOs itself: no --from or --to with it");
+      auto timeline = readTimeline(timelineFile, *cueList, hold);
+      if (!timeline) return fail(timeline.error().str());
+      job.timeline = std::move(*timeline);
     }
     if (job.from > job.to)
       return fail("--from " + cueList->cues[job.from].number + " comes after --to " + cueList->cues[job.to].number +

@@ -1,11 +1,12 @@
 // `haze --version`: the release (CMake's project version), the commit it was configured from
 // (git describe at configure time; "unknown" outside a git checkout), and the OpenGL context
-// this machine gives the renderer. No context is not an error here: the line says why.
+// this machine gives the renderer, and the versions of the output libraries (EXR, video, PDF). No context is not an error here: the line says why.
 #include <cstdio>
 #include <string>
 
 #include "app/commands.h"
 #include "renderer/context.h"
+#include "renderer/output/library_versions.h"
 
 #ifndef HAZE_VERSION
 #define HAZE_VERSION "unknown"
@@ -27,6 +28,7 @@ int runVersion(const Args& args) {
     std::printf("renderer: %s\n", (*context)->description().c_str());
   else
     std::printf("renderer: no OpenGL context: %s\n", context.error().str().c_str());
+  std::printf("output: %s\n", outputLibraryVersions().c_str());
   return 0;
 }
 

@@ -4,9 +4,14 @@
 #include <csignal>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <regex>
 
+#include <nlohmann/json.hpp>
+
 #include "app/progress.h"
+#include "renderer/output/caption.h"
 #include "renderer/output/exr.h"
 #include "renderer/output/video_writer.h"
 #include "renderer/scene/image.h"
@@ -67,9 +72,42 @@ bool isImageSequence(const std::filesystem::path& out, std::string& error) {
   return true;
 }
 
+Result<CueTimeline> readTimeline(const std::filesystem::path& file, const CueList& list, double holdS) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return Error{file.string(), "", "cannot open the timeline"};
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto bad = [&](const std::string& where, const std::string& what) { return Error{file.string(), where, what}; };
+  nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+  if (doc.is_discarded() || !doc.is_object()) return bad("", "not a JSON object");
+  if (!doc.contains("go") || !doc["go"].is_array() || doc["go"].empty())
+    return bad("/go", "expected a list of GOs: [{\"cue\": \"1\", \"at\": 0}, ...]");
+  CueTimeline timeline;
+  double last = 0.0;
+  for (size_t i = 0; i < doc["go"].size(); ++i) {
+    const auto& go = doc["go"][i];
+    const std::string at = "/go/" + std::to_string(i);
+    if (!go.is_object() || !go.contains("cue") || !go["cue"].is_string())
+      return bad(at + "/cue", "expected a cue number as text (\"2\", \"4.5\")");
+    if (!go.contains("at") || !go["at"].is_number() || go["at"].get<double>() < last)
+      return bad(at + "/at", i == 0 ? "expected seconds >= 0" : "expected seconds, not before the GO before it");
+    auto cue = findCue(list, go["cue"].get<std::string>());
+    if (!cue) return bad(at + "/cue", cue.error().message);
+    last = go["at"].get<double>();
+    timeline.gos.push_back({.cueIndex = *cue, .atS = last});
+    const Cue& c = list.cues[*cue];
+    timeline.endS = std::max(timeline.endS, last + c.delayS + c.fadeS + holdS);
+  }
+  if (doc.contains("end")) {
+    if (!doc["end"].is_number() || doc["end"].get<double>() <= 0) return bad("/end", "expected seconds > 0");
+    timeline.endS = doc["end"].get<double>();
+  }
+  return timeline;
+}
+
 Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const ProfileSet& profiles, const VideoJob& job) {
   const CueList& list = *job.list;
-  const CueTimeline timeline = playCueRange(list, job.from, job.to, job.holdS);
+  const CueTimeline timeline = job.timeline ? *job.timeline : playCueRange(list, job.from, job.to, job.holdS);
+  const size_t firstCue = timeline.gos.empty() ? job.from : timeline.gos.front().cueIndex;
   const double endS = job.durationS > 0 ? job.durationS : timeline.endS;
   const int frames = std::max(1, static_cast<int>(std::ceil(endS * job.fps - 1e-9)));
   const RenderJobOptions& options = session.options();
@@ -88,7 +126,7 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
   }
 
   CuePlayer player(show, profiles, list);
-  if (job.from > 0) player.jumpTo(job.from - 1, 0.0);
+  if (firstCue > 0) player.jumpTo(firstCue - 1, 0.0);
   size_t nextGo = 0;
   StageState lastState;
   std::vector<unsigned char> rgb;
@@ -118,6 +156,17 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
       lastState = std::move(state);
       ++drawn;
     }
+    std::vector<unsigned char> shown;
+    if (!exr && job.caption) {
+      shown = rgb;
+      char text[256];
+      const auto current = player.currentCue();
+      const Cue& cue = list.cues[current.value_or(job.from)];
+      std::snprintf(text, sizeof text, "cue %s%s%s   %.2f s", cue.number.c_str(), cue.label.empty() ? "" : "  ",
+                    cue.label.c_str(), t);
+      burnCaption(shown, options.width, options.height, text);
+    }
+    const std::vector<unsigned char>& frame = job.caption ? shown : rgb;
     if (exr) {
       const Cue& cue = list.cues[player.currentCue().value_or(job.from)];
       char comment[256];
@@ -128,8 +177,8 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
           !s)
         return s.error();
     } else if (sequence) {
-      if (Status s = writePng8(rgb, options.width, options.height, sequenceFile(job.out, f)); !s) return s.error();
-    } else if (Status s = writer->addFrame(rgb); !s) {
+      if (Status s = writePng8(frame, options.width, options.height, sequenceFile(job.out, f)); !s) return s.error();
+    } else if (Status s = writer->addFrame(frame); !s) {
       return s.error();
     }
     progress.step(f + 1);

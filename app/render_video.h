@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/render_session.h"
+#include "shows/cue_timeline.h"
 #include "shows/show.h"
 
 namespace haze {
@@ -21,7 +22,16 @@ struct VideoJob {
   std::string codec = "libx264";
   std::filesystem::path out;
   bool progress = false;    // --progress: report even when stderr is not a terminal
+  bool caption = false;     // burn "cue N label, t s" into video and PNG frames
+  // --timeline FILE.json: the operator's GO times instead of from..to with holds.
+  std::optional<CueTimeline> timeline;
 };
+
+// {"go": [{"cue": "1", "at": 0}, {"cue": "2", "at": 8.5}, ...], "end": 30}: GO presses at
+// increasing times (the first at 0 or later), follows still firing by themselves; "end"
+// (optional) is where the video stops, by default holdS after the last GO's delay and fade.
+// Errors name the file and the JSON pointer.
+Result<CueTimeline> readTimeline(const std::filesystem::path& file, const CueList& list, double holdS);
 
 // True when `out` names an image sequence: a printf-style frame number (%d, %05d) and .png or
 // .exr. A '%' that is not one such number is an error (named in `error`).

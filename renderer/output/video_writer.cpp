@@ -86,14 +86,6 @@ VideoWriter::~VideoWriter() {
 
 int VideoWriter::frames() const { return static_cast<int>(impl_->nextPts); }
 
-std::string VideoWriter::libraryVersions() {
-  const auto v = [](unsigned n) {
-    return std::to_string(AV_VERSION_MAJOR(n)) + "." + std::to_string(AV_VERSION_MINOR(n)) + "." +
-           std::to_string(AV_VERSION_MICRO(n));
-  };
-  return "libavcodec " + v(avcodec_version()) + ", libavformat " + v(avformat_version());
-}
-
 Result<std::unique_ptr<VideoWriter>> VideoWriter::create(const std::filesystem::path& file, const VideoOptions& options) {
   // Failures are reported as one line each by the caller; FFmpeg's own log would add more.
   av_log_set_level(AV_LOG_QUIET);

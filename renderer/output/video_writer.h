@@ -36,9 +36,6 @@ class VideoWriter {
   Status finish();
   int frames() const;
 
-  // "libavcodec 59.37.100, libavformat 59.27.100" (for --version).
-  static std::string libraryVersions();
-
  private:
   struct Impl;
   explicit VideoWriter(std::unique_ptr<Impl> impl);

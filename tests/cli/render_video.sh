@@ -2,7 +2,7 @@
 # `haze render --video`: 3 s of the demo's fade from cue 1 into cue 2 at 320x180, decoded by
 # FFmpeg's command-line tools (not haze): frame count, size, frame rate, codec, and the frame at
 # 1.5 s against the still `haze render --cue 2 --at 1.5` within the codec's error (PSNR > 35 dB,
-# measured 39.7 dB). Image sequences (PNG bit-exact with the still, EXR against the PFM). Bad
+# measured 39.5 dB). Image sequences (PNG bit-exact with the still, EXR against the PFM). Bad
 # input (unwritable path, missing cue, missing codec, Ctrl-C): one line, non-zero exit, and no
 # file under the final name.
 set -uo pipefail
@@ -42,11 +42,31 @@ check "PNG frame 1 is the still at 0.25 s" 'cmp -s "$tmp/seq-00001.png" "$tmp/st
 "$haze" render "$show" --video "$tmp/delay-%d.png" --from 3 --to 3 --duration 1 --fps 2 "${size[@]}" >/dev/null
 "$haze" render "$show" --cue 3 --at 0.5 "${size[@]}" -o "$tmp/still3.png"
 check "a repeated frame of a delay is the still of its moment" 'cmp -s "$tmp/delay-1.png" "$tmp/still3.png"'
+# --caption: the band in the bottom-left (captionBand: 192x12 at 320x180) carries white text on
+# a dark ground; every pixel above it is the uncaptioned frame's.
+"$haze" render "$show" --video "$tmp/cap-%05d.png" --from 2 --to 2 --duration 0.5 --fps 4 --caption "${size[@]}" >/dev/null
+convert "$tmp/cap-00001.png" -crop 320x168+0+0 +repage "$tmp/cap-top.png"
+convert "$tmp/still025.png" -crop 320x168+0+0 +repage "$tmp/still-top.png"
+check "caption: the frame above the band is untouched" '[ "$(compare -metric AE "$tmp/cap-top.png" "$tmp/still-top.png" null: 2>&1)" = 0 ]'
+white=$(convert "$tmp/cap-00001.png" -crop 192x12+0+168 +repage -colorspace gray -format "%[fx:maxima]" info:)
+check "caption: white text in the band (brightest $white > 0.9)" 'awk -v m="$white" "BEGIN { exit !(m > 0.9) }"'
 "$haze" render "$show" --video "$tmp/seq-%03d.exr" --from 2 --to 2 --duration 0.25 --fps 4 --width 64 --height 36 >/dev/null
 "$haze" render "$show" --cue 2 --at 0 --width 64 --height 36 -o "$tmp/still0.pfm"
 ffmpeg -v error -i "$tmp/seq-000.exr" -f rawvideo -pix_fmt gbrpf32le -y "$tmp/seq-000.raw"
 python3 "$root/tests/cli/exr_vs_pfm.py" "$tmp/seq-000.exr" "$tmp/seq-000.raw" "$tmp/still0.pfm" half >"$tmp/exrcheck" 2>&1; rc=$?
 check "EXR frame 0 is the PFM at 0 s: $(tail -n 1 "$tmp/exrcheck")" '[ $rc -eq 0 ] && grep -q "frame 0 at 0.000 s, cue 2" "$tmp/exrcheck"'
+
+# --timeline: GO cue 2 at 0, then cue 4 at 0.5 s: frame 0 is cue 2's start, frame 2 (1 s) is no
+# longer cue 2's fade at 1 s but cue 4 fading in.
+echo '{"go": [{"cue": "2", "at": 0}, {"cue": "4", "at": 0.5}], "end": 1.5}' >"$tmp/timeline.json"
+"$haze" render "$show" --video "$tmp/tl-%d.png" --timeline "$tmp/timeline.json" --fps 2 "${size[@]}" >/dev/null
+"$haze" render "$show" --cue 2 --at 0 "${size[@]}" -o "$tmp/c2at0.png"
+"$haze" render "$show" --cue 2 --at 1 "${size[@]}" -o "$tmp/c2at1.png"
+check "timeline: 3 frames for end 1.5 s at 2 fps" '[ "$(ls "$tmp"/tl-*.png | wc -l)" -eq 3 ]'
+check "timeline: frame 0 is cue 2 at 0 s" 'cmp -s "$tmp/tl-0.png" "$tmp/c2at0.png"'
+check "timeline: frame 2 is not cue 2 at 1 s (cue 4 was GOne at 0.5 s)" '! cmp -s "$tmp/tl-2.png" "$tmp/c2at1.png"'
+echo '{"go": [{"cue": "2", "at": 1}, {"cue": "3", "at": 0.5}]}' >"$tmp/backwards.json"
+echo '{"go": [{"cue": "77", "at": 0}]}' >"$tmp/nocue.json"
 
 expect_error() {  # name, expected text, final file that must not exist, command...
   local name=$1 want=$2 file=$3; shift 3
@@ -66,6 +86,11 @@ expect_error missing-codec "no-such-encoder" "$tmp/x.mp4" \
   "$haze" render "$show" --video "$tmp/x.mp4" --codec no-such-encoder --duration 0.1 "${size[@]}"
 expect_error odd-size "even width" "$tmp/x.mp4" "$haze" render "$show" --video "$tmp/x.mp4" --duration 0.1 --width 33 --height 18
 expect_error bad-pattern "one frame number" "$tmp/y-0-0.png" "$haze" render "$show" --video "$tmp/y-%d-%d.png" --duration 0.1 "${size[@]}"
+
+expect_error timeline-backwards "backwards.json:/go/1/at" "$tmp/x.mp4" \
+  "$haze" render "$show" --video "$tmp/x.mp4" --timeline "$tmp/backwards.json" "${size[@]}"
+expect_error timeline-no-cue 'nocue.json:/go/0/cue.*"77"' "$tmp/x.mp4" \
+  "$haze" render "$show" --video "$tmp/x.mp4" --timeline "$tmp/nocue.json" "${size[@]}"
 
 # Ctrl-C in the middle: the render stops between frames, says so, and removes its temporary file.
 "$haze" render "$show" --video "$tmp/long.mp4" --duration 60 --fps 12 "${size[@]}" >/dev/null 2>"$tmp/err" &

@@ -19,6 +19,8 @@ else
   check "commit '$commit' is in the repository" 'git -C "$root" cat-file -e "$commit^{commit}" 2>/dev/null'
 fi
 check "renderer line names OpenGL" 'grep -q "^renderer: OpenGL [0-9]" <<<"$out"'
+want_av=$(pkg-config --modversion libavcodec 2>/dev/null || echo "[0-9.]*")
+check "output line names OpenEXR, libavcodec $want_av, cairo" 'grep -qE "^output: OpenEXR [0-9.]+, libavcodec $want_av, libavformat [0-9.]+, cairo [0-9.]+$" <<<"$out"'
 "$haze" --version extra >/dev/null 2>&1; rc=$?
 check "an argument is a usage error (rc $rc)" '[ $rc -eq 2 ]'
 echo "$pass passed, $fail failed"
