@@ -105,7 +105,46 @@ class BeamsVsReference : public GlTest {
     if (!passed || std::getenv("HAZE_TEST_IMAGES"))
       for (const auto& file : writeDiagnostics(name, gpu, ref.inScattered))
         std::printf("[ %s ] wrote %s\n", name.c_str(), file.c_str());
+    if (passed) expectTeeth(name, **r, frame, gpu, ref.inScattered, limits);
     return gpu;
+  }
+  static bool within(const BeamComparison& c, const Limits& l) {
+    return c.coreError < l.core && c.wideError < l.wide && c.leak() <= l.leak;
+  }
+  // The limits have teeth: the same comparison fails the image made wrong on purpose. Brighter
+  // by 10 %, it must fail every scene (a limit that passes it could not see a 10 % error); with
+  // a beam left out (scenes of several beams, at default only, for the test's time), it must
+  // fail; an image of another size is an error, not a match.
+  void expectTeeth(const std::string& name, Renderer& r, const FrameState& frame, const ImageRGB& gpu,
+                   const ImageRGB& ref, const Limits& limits) {
+    ImageRGB brighter = gpu;
+    for (glm::vec3& p : brighter.pixels) p *= 1.1f;
+    const auto b = compareBeams(brighter, ref);
+    ASSERT_TRUE(b.ok());
+    EXPECT_FALSE(within(*b, limits)) << name << ": the limits pass the image scaled by 1.1 (cores "
+                                     << b->coreError << ", wide " << b->wideError << ")";
+    ImageRGB cropped = gpu;
+    cropped.height -= 1;
+    cropped.pixels.resize(static_cast<size_t>(cropped.width) * cropped.height);
+    EXPECT_FALSE(compareBeams(cropped, ref).ok()) << name << ": an image one row short compared";
+    std::printf("[ %s ] teeth: scaled by 1.1 %.4f / %.4f (cores / wide)\n", name.c_str(), b->coreError, b->wideError);
+    if (frame.beams.size() < 2 || name.find("_default") == std::string::npos) return;
+    FrameState fewer = frame;
+    fewer.beams.pop_back();
+    FrameState dry = fewer;
+    dry.medium.absorption = fewer.medium.extinction();
+    dry.medium.scattering = 0.0f;
+    r.render(dry);
+    ImageRGB missing = r.readRadiance();
+    r.render(fewer);
+    const ImageRGB wet = r.readRadiance();
+    for (size_t i = 0; i < missing.pixels.size() && i < wet.pixels.size(); ++i) missing.pixels[i] = wet.pixels[i] - missing.pixels[i];
+    const auto m = compareBeams(missing, ref);
+    ASSERT_TRUE(m.ok());
+    EXPECT_FALSE(within(*m, limits)) << name << ": the limits pass the image with a beam left out (cores "
+                                     << m->coreError << ", wide " << m->wideError << ")";
+    std::printf("[ %s ] teeth: a beam left out %.4f / %.4f (cores / wide)\n", name.c_str(), m->coreError,
+                m->wideError);
   }
   // Every scene at high and default against the limits; with HAZE_TEST_DRAFT set, draft is
   // measured too (printed, not asserted: draft promises speed, not accuracy).
