@@ -53,6 +53,7 @@ Result<BeamComparison> compareBeams(const ImageRGB& actual, const ImageRGB& refe
         const double e = std::abs(double(a) - r) / r;
         wide += e;
         ++c.wideValues;
+        if (e > 0.5) ++c.grossValues;
         if (r > coreCut) {
           core += e;
           ++c.coreValues;

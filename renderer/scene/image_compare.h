@@ -41,7 +41,11 @@ struct BeamComparison {
   double coreError = 0, wideError = 0;
   size_t coreValues = 0, wideValues = 0;
   size_t darkValues = 0, leakedValues = 0;
+  // Wide-mask values off by more than half: what a mean hides when a small beam is missing or
+  // misplaced beside a large one (its own pixels are all wrong, the mean barely moves).
+  size_t grossValues = 0;
   double leak() const { return darkValues > 0 ? double(leakedValues) / double(darkValues) : 0.0; }
+  double gross() const { return wideValues > 0 ? double(grossValues) / double(wideValues) : 0.0; }
 };
 // An error when the sizes differ or when the reference has no in-scattered light.
 Result<BeamComparison> compareBeams(const ImageRGB& actualInScattered, const ImageRGB& referenceInScattered);

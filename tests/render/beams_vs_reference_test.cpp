@@ -37,6 +37,9 @@ class BeamsVsReference : public GlTest {
     double core, wide;     // mean relative error over the beam cores and over the wider mask
     double leak = 1.0;     // fraction of the reference's dark values the image lights
     size_t minCore = 40, minWide = 200, minDark = 0;  // enough values for the means to mean something
+    // Wide-mask values off by more than half (image_compare.h): 0 measured on most scenes, so
+    // 0.05 % holds them and still sees a dim beam left out beside a bright one (0.096 %).
+    double gross = 0.0005;
   };
   // The reference images of a scene, made once per test for every preset.
   // HAZE_TEST_REFERENCE_CACHE=DIR keeps them as PFMs there between runs (for measuring a
@@ -88,16 +91,17 @@ class BeamsVsReference : public GlTest {
     bool passed = c.ok();
     if (c) {
       std::printf("[ %s ] planes %d, divisor %d, frames %d: mean relative error %.4f over %zu core values, "
-                  "%.4f over %zu wide values; leak %.5f of %zu dark values\n",
+                  "%.4f over %zu wide values; leak %.5f of %zu dark values; gross %.5f\n",
                   name.c_str(), settings.planes, settings.scatterDivisor, settings.frames, c->coreError,
-                  c->coreValues, c->wideError, c->wideValues, c->leak(), c->darkValues);
+                  c->coreValues, c->wideError, c->wideValues, c->leak(), c->darkValues, c->gross());
       EXPECT_GE(c->coreValues, limits.minCore) << name << ": too few beam-core values compared";
       EXPECT_GE(c->wideValues, limits.minWide) << name << ": too few wide-mask values compared";
       EXPECT_GE(c->darkValues, limits.minDark) << name << ": too few dark values to measure a leak";
       EXPECT_LT(c->coreError, limits.core) << name << " (beam cores)";
       EXPECT_LT(c->wideError, limits.wide) << name << " (wide mask)";
       EXPECT_LE(c->leak(), limits.leak) << name << " (light where the reference is dark)";
-      passed = c->coreError < limits.core && c->wideError < limits.wide && c->leak() <= limits.leak &&
+      EXPECT_LE(c->gross(), limits.gross) << name << " (values off by more than half)";
+      passed = within(*c, limits) &&
                c->coreValues >= limits.minCore && c->wideValues >= limits.minWide && c->darkValues >= limits.minDark;
     } else {
       ADD_FAILURE() << name << ": " << c.error().str();
@@ -105,11 +109,11 @@ class BeamsVsReference : public GlTest {
     if (!passed || std::getenv("HAZE_TEST_IMAGES"))
       for (const auto& file : writeDiagnostics(name, gpu, ref.inScattered))
         std::printf("[ %s ] wrote %s\n", name.c_str(), file.c_str());
-    if (passed) expectTeeth(name, **r, frame, gpu, ref.inScattered, limits);
+    if (passed && limits.core < kOpen) expectTeeth(name, **r, frame, gpu, ref.inScattered, limits);
     return gpu;
   }
   static bool within(const BeamComparison& c, const Limits& l) {
-    return c.coreError < l.core && c.wideError < l.wide && c.leak() <= l.leak;
+    return c.coreError < l.core && c.wideError < l.wide && c.leak() <= l.leak && c.gross() <= l.gross;
   }
   // The limits have teeth: the same comparison fails the image made wrong on purpose. Brighter
   // by 10 %, it must fail every scene (a limit that passes it could not see a 10 % error); with
@@ -143,8 +147,8 @@ class BeamsVsReference : public GlTest {
     ASSERT_TRUE(m.ok());
     EXPECT_FALSE(within(*m, limits)) << name << ": the limits pass the image with a beam left out (cores "
                                      << m->coreError << ", wide " << m->wideError << ")";
-    std::printf("[ %s ] teeth: a beam left out %.4f / %.4f (cores / wide)\n", name.c_str(), m->coreError,
-                m->wideError);
+    std::printf("[ %s ] teeth: a beam left out %.4f / %.4f (cores / wide), gross %.5f\n", name.c_str(),
+                m->coreError, m->wideError, m->gross());
   }
   // Every scene at high and default against the limits; with HAZE_TEST_DRAFT set, draft is
   // measured too (printed, not asserted: draft promises speed, not accuracy).
@@ -153,7 +157,7 @@ class BeamsVsReference : public GlTest {
     run(name, name + "_high", venue, frame, renderSettingsFor(Quality::High, w, h), high);
     run(name, name + "_default", venue, frame, renderSettingsFor(Quality::Default, w, h), standard);
     if (std::getenv("HAZE_TEST_DRAFT"))
-      run(name, name + "_draft", venue, frame, renderSettingsFor(Quality::Draft, w, h), {kOpen, kOpen, 1.0, 0, 0, 0});
+      run(name, name + "_draft", venue, frame, renderSettingsFor(Quality::Draft, w, h), {kOpen, kOpen, 1.0, 0, 0, 0, 1.0});
   }
   ReferenceImages ref_;
 };
@@ -291,7 +295,9 @@ TEST_F(BeamsVsReference, GoboSpotFromTheSideHd) {
   ASSERT_EQ(s.scatterDivisor, 2) << "the preset this test is about";
   // Measured 11.8 % over the cores (the lens end of the beam, where the rings are finest on
   // screen) and 5.0 % over the wider mask: above the 8 % and 5 % wanted (docs/rendering.md).
-  run("gobo_side_hd", "gobo_side_default_hd", floorVenue(16.0f, 0.5f), goboSideFrame(), s, {0.14, 0.06});
+  // Values off by more than half: 0.455 % measured, the ring edges near the lens.
+  run("gobo_side_hd", "gobo_side_default_hd", floorVenue(16.0f, 0.5f), goboSideFrame(), s,
+      {0.14, 0.06, 1.0, 40, 200, 0, 0.007});
 }
 
 // Eight coloured fixtures crossing around a set piece (a box that shadows some of them).
