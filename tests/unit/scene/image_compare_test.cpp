@@ -102,6 +102,21 @@ TEST(CompareBeams, CoreWideAndLeakByHand) {
   EXPECT_NEAR(c->leak(), 0.01, 1e-12);
 }
 
+// A dim beam missing beside a bright one: the means barely move, the gross fraction counts it.
+TEST(CompareBeams, GrossCountsValuesOffByMoreThanHalf) {
+  ImageRGB ref = filled(100, 10, glm::vec3(100.0f));
+  ImageRGB act = ref;
+  for (size_t i = 0; i < 10; ++i) ref.pixels[i] = glm::vec3(5.0f);  // the dim beam, in the mask
+  for (size_t i = 0; i < 10; ++i) act.pixels[i] = glm::vec3(0.0f);  // left out
+  act.pixels[20] = glm::vec3(149.0f);                                 // 49 % off: not gross
+  auto c = compareBeams(act, ref);
+  ASSERT_TRUE(c.ok()) << c.error().str();
+  EXPECT_EQ(c->wideValues, 3000u);
+  EXPECT_EQ(c->grossValues, 30u);
+  EXPECT_NEAR(c->gross(), 0.01, 1e-12);
+  EXPECT_LT(c->coreError, 0.011);  // the mean: 1 % however wrong the dim beam is
+}
+
 TEST(CompareBeams, DarkReferenceOrOtherSizeIsAnError) {
   const ImageRGB dark = filled(4, 4, glm::vec3(0.0f));
   EXPECT_FALSE(compareBeams(dark, dark).ok());
