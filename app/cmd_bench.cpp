@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/bench_scene.h"
+#include "app/bench_show.h"
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/render_session.h"
@@ -122,13 +123,15 @@ int runStudy(int width, int height) {
 constexpr const char* kBenchUsage =
     "usage: haze bench [--fixtures N] [--width W --height H] [--quality Q] [--frames K] [--planes N]\n"
     "                  [--scatter-divisor D] [--min-samples M] [--compare-reference] [--json]\n"
+    "                  [--show FILE [--cue N] [--cells separate|merged]]\n"
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures) per frame; --compare-reference also renders the CPU reference\n"
-    "and gives the mean relative error; --study runs the virtual-plane accuracy study.\n";
+    "and gives the mean relative error; --study runs the virtual-plane accuracy study.\n"
+    "--show FILE times cue N (default: the first) of a show instead, from its first camera.\n";
 
 int runBench(const Args& args) {
   int fixtures = 16, width = 1280, height = 720, frames = 5;
-  std::string quality = "default";
+  std::string quality = "default", showPath, cue, cells = "separate";
   bool json = false, compare = false, study = false;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
   CommandLine cli("haze bench", kBenchUsage);
@@ -142,7 +145,10 @@ int runBench(const Args& args) {
       .flag("--study", study)
       .integer("--planes", planes, 1, 4096, "1..4096")
       .integer("--scatter-divisor", divisor, 1, 8, "1..8")
-      .integer("--min-samples", minSamples, 0, 256, "0..256");
+      .integer("--min-samples", minSamples, 0, 256, "0..256")
+      .text("--show", showPath, "a show file")
+      .text("--cue", cue, "a cue number")
+      .choice("--cells", cells, {"separate", "merged"});
   if (auto done = cli.parse(args)) return *done;
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
@@ -151,8 +157,14 @@ int runBench(const Args& args) {
   auto ctx = createHeadlessContext();
   if (!ctx) return fail(ctx.error().str());
   if (study) return runStudy(width, height);
-  const Venue venue = benchVenue();
-  const FrameState frame = benchFrame(fixtures);
+  Venue venue;
+  FrameState frame;
+  if (showPath.empty()) {
+    venue = benchVenue();
+    frame = benchFrame(fixtures);
+  } else if (Status s = loadBenchShow(showPath, cue, cells == "merged", venue, frame); !s) {
+    return fail(s.error().str());
+  }
   RenderSettings settings = renderSettingsFor(*q, width, height);
   if (planes > 0) settings.planes = planes;
   if (divisor > 0) settings.scatterDivisor = divisor;
@@ -192,6 +204,8 @@ int runBench(const Args& args) {
   out["width"] = width;
   out["height"] = height;
   out["fixtures"] = fixtures;
+  if (!showPath.empty()) out["show"] = showPath;
+  out["beams"] = frame.beams.size();
   out["quality"] = quality;
   out["planes_per_beam"] = rs.planes;
   out["scatter_divisor"] = rs.scatterDivisor;

@@ -18,6 +18,7 @@
 #include "app/render_job.h"
 #include "app/state_json.h"
 #include "shows/dmx/udp_receiver.h"
+#include "shows/movement.h"
 #include "fixtures/core/atomic_file.h"
 #include "shows/show.h"
 #include "shows/show_json.h"
@@ -37,7 +38,8 @@ constexpr const char* kUsage =
     "haze universe P + 1, so Art-Net 0:0:0 drives patch universe 1.\n"
     "sACN multicast (239.255.hi.lo) is joined for the patched universes when --bind is not a\n"
     "loopback address, or with --multicast. Port 0 picks a free port (printed on stderr).\n"
-    "--duration 0 (the default) runs until Ctrl-C.\n";
+    "--duration 0 (the default) runs until Ctrl-C.\n"
+    "--movement real|instant: heads follow DMX at the fixtures' speeds (default) or jump at once.\n";
 
 volatile std::sig_atomic_t gStop = 0;
 void onSignal(int) { gStop = 1; }
@@ -81,7 +83,7 @@ void printReport(const LiveReceiver& live, double seconds) {
 }  // namespace
 
 int runLive(const Args& args) {
-  std::string showPath, stateJson, renderOut, onLoss = "hold", quality = "default", exposureMode;
+  std::string showPath, stateJson, renderOut, onLoss = "hold", quality = "default", exposureMode, movement = "real";
   double exposure = std::nan("");
   LiveOptions options;
   RenderJobOptions render;
@@ -101,6 +103,7 @@ int runLive(const Args& args) {
       .flag("--multicast", options.udp.multicast)
       .choice("--on-loss", onLoss, {"hold", "blackout"})
       .flag("--no-preview", noPreview)
+      .choice("--movement", movement, {"real", "instant"})
       .text("--camera", render.camera, "a camera name")
       .integer("--width", render.width, 1, 16384, "a whole number 1..16384")
       .integer("--height", render.height, 1, 16384, "a whole number 1..16384")
@@ -166,13 +169,29 @@ int runLive(const Args& args) {
   }
 
   const double start = LiveReceiver::nowS();
+  // The heads follow each DMX value from the moment a poll returns with it (docs/movement.md);
+  // the command before it holds until then. They start where the first DMX puts them, as a rig
+  // that was switched on at the console's look.
+  MovementFollower heads(*show, *profiles);
+  StageState commanded = receiver.state();
+  heads.reset(commanded, 0.0);
+  bool seeded = false;
   while (!gStop) {
     const double elapsed = LiveReceiver::nowS() - start;
     if (duration > 0 && elapsed >= duration) break;
     const double leftMs = duration > 0 ? (duration - elapsed) * 1000.0 : 100.0;
     receiver.poll(static_cast<int>(std::clamp(leftMs, 1.0, 100.0)));
+    const double now = LiveReceiver::nowS() - start;
+    heads.advance(commanded, now, false);
+    commanded = receiver.state();
+    if (!seeded && receiver.stats().good > 0) {
+      heads.reset(commanded, now);
+      seeded = true;
+    }
   }
-  const StageState& state = receiver.poll(0);
+  const StageState& dmxState = receiver.poll(0);
+  const StageState moved = heads.advance(dmxState, LiveReceiver::nowS() - start, false);
+  const StageState& state = movement == "real" ? moved : dmxState;
   sigaction(SIGINT, &oldInt, nullptr);
   sigaction(SIGTERM, &oldTerm, nullptr);
   printReport(receiver, LiveReceiver::nowS() - start);

@@ -9,6 +9,7 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/render_session.h"
+#include "shows/movement.h"
 #include "shows/playback.h"
 #include "shows/show.h"
 
@@ -24,12 +25,14 @@ constexpr const char* kUsage =
     "PNGs are metered like a camera (auto, the default) and --exposure EV is an offset from the\n"
     "metered exposure; with --exposure-mode manual it is absolute (EV 0: 50 cd/m^2 maps to 1).\n"
     "A camera's \"exposure\" in the show is used unless these are given. PFMs are never exposed.\n"
-    "--bloom F spreads the fraction F (0..1) of the light as lens glare in PNGs; PFMs stay radiometric.\n";
+    "--bloom F spreads the fraction F (0..1) of the light as lens glare in PNGs; PFMs stay radiometric.\n"
+    "--movement real|instant: pan, tilt and zoom at the fixtures' speeds (default) or at once.\n"
+    "--cells separate|merged: one beam per cell (default), or a fixture's alike cells as one beam.\n";
 
 }  // namespace
 
 int runRender(const Args& args) {
-  std::string showPath, cue, list, out, camera, quality = "default", exposureMode;
+  std::string showPath, cue, list, out, camera, quality = "default", exposureMode, movement = "real", cells = "separate";
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
   bool allCues = false;
@@ -45,6 +48,8 @@ int runRender(const Args& args) {
       .number("--exposure", exposure, -100, 100, "a number of EV")
       .choice("--exposure-mode", exposureMode, {"auto", "manual"})
       .number("--bloom", bloom, 0, 1, "a fraction 0..1")
+      .choice("--movement", movement, {"real", "instant"})
+      .choice("--cells", cells, {"separate", "merged"})
       .text("-o|--output", out, "a file or a folder")
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
@@ -64,14 +69,15 @@ int runRender(const Args& args) {
 
   RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
                            .quality = *q, .exposureMode = parseExposureMode(exposureMode),
-                           .bloom = static_cast<float>(bloom)};
+                           .bloom = static_cast<float>(bloom), .mergeCells = cells == "merged"};
   if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
   auto session = RenderSession::open(*show, options);
   if (!session) return fail(session.error().str());
 
   auto renderCue = [&](size_t index, const std::filesystem::path& file) -> bool {
-    const StageState state = at >= 0 ? stateAt(*show, *profiles, *cueList, index, at)
-                                     : trackedState(*show, *profiles, *cueList, index);
+    const StageState state = at < 0 ? trackedState(*show, *profiles, *cueList, index)
+                             : movement == "real" ? movingStateAt(*show, *profiles, *cueList, index, at)
+                                                  : stateAt(*show, *profiles, *cueList, index, at);
     const Status s = (*session)->renderToFile(*show, *profiles, state, file);
     if (!s) {
       fail(s.error().str());

@@ -1,7 +1,11 @@
 #include "app/frame_builder.h"
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
+#include <vector>
+
+#include "app/cell_merge.h"
 
 namespace haze {
 namespace {
@@ -42,8 +46,16 @@ MediumState mediumState(const AtmosphereDef& def) {
   return m;
 }
 
+uint64_t poseCacheKey(const BeamPose& pose) {
+  uint64_t pk = kFnvBasis;
+  pk = hashValue(pk, pose.lensPosition);
+  pk = hashValue(pk, pose.zb);
+  pk = hashValue(pk, pose.xb);
+  return pk;
+}
+
 Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, const StageState& state,
-                              const std::string& cameraName) {
+                              const std::string& cameraName, const FrameOptions& options) {
   FrameState frame;
   if (!cameraName.empty()) {
     const CameraDef* found = nullptr;
@@ -70,24 +82,34 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
     const auto s = state.find(f.id);
     const Attributes a = s != state.end() ? s->second : Attributes{};
     if (a.intensity <= 0.0f) continue;  // a dark fixture adds nothing to any pixel
-    BeamState b;
-    b.fixtureId = f.id;
-    b.pose = beamPose(f.position, f.rotationDeg, a.panDeg, a.tiltDeg, profile.lensOffset);
-    b.optics = profile.optics(a);
-    uint64_t pk = kFnvBasis;
-    pk = hashValue(pk, b.pose.lensPosition);
-    pk = hashValue(pk, b.pose.zb);
-    pk = hashValue(pk, b.pose.xb);
-    b.poseKey = pk;
-    uint64_t ok = kFnvBasis;
-    ok = hashValue(ok, b.optics.distribution.get());
-    ok = hashValue(ok, b.optics.profileFieldAngleDeg);
-    ok = hashValue(ok, b.optics.fieldAngleDeg);
-    ok = hashValue(ok, b.optics.gobo.get());
-    ok = hashValue(ok, b.optics.goboRotationDeg);
-    ok = hashValue(ok, b.optics.iris);
-    b.opticsKey = ok;
-    frame.beams.push_back(std::move(b));
+    // One beam per cell of a multi-cell fixture (docs/cells.md), else the profile's one beam.
+    const size_t beams = std::max<size_t>(1, profile.cells.size());
+    std::vector<BeamState> fixtureBeams;
+    for (size_t cell = 0; cell < beams; ++cell) {
+      BeamState b;
+      b.fixtureId = f.id;
+      if (profile.cells.empty()) {
+        b.pose = beamPose(f.position, f.rotationDeg, a.panDeg, a.tiltDeg, profile.lensOffset);
+        b.optics = profile.optics(a);
+      } else {
+        b.cell = static_cast<int>(cell);
+        b.optics = cellOptics(profile, a, cell);
+        if (b.optics.dimmer <= 0.0f) continue;
+        b.pose = beamPose(f.position, f.rotationDeg, a.panDeg, a.tiltDeg, profile.cells[cell].lensOffset);
+      }
+      b.poseKey = poseCacheKey(b.pose);
+      uint64_t ok = kFnvBasis;
+      ok = hashValue(ok, b.optics.distribution.get());
+      ok = hashValue(ok, b.optics.profileFieldAngleDeg);
+      ok = hashValue(ok, b.optics.fieldAngleDeg);
+      ok = hashValue(ok, b.optics.gobo.get());
+      ok = hashValue(ok, b.optics.goboRotationDeg);
+      ok = hashValue(ok, b.optics.iris);
+      b.opticsKey = ok;
+      fixtureBeams.push_back(std::move(b));
+    }
+    if (options.mergeCells) mergeCellBeams(fixtureBeams);
+    for (BeamState& b : fixtureBeams) frame.beams.push_back(std::move(b));
   }
   return frame;
 }

@@ -25,6 +25,7 @@ struct RenderJobOptions {
   std::optional<ExposureMode> exposureMode;
   std::optional<float> exposureEv;
   float bloom = 0.0f;  // PNG only
+  bool mergeCells = false;  // docs/cells.md, "Cost": a fixture's alike cells as one beam
 };
 
 // The exposure a PNG of this show gets with these options.

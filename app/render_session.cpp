@@ -66,7 +66,7 @@ Result<std::unique_ptr<RenderSession>> RenderSession::open(const Show& show, con
 
 Status RenderSession::renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
                                    const std::filesystem::path& out) {
-  auto frame = buildFrame(show, profiles, state, options_.camera);
+  auto frame = buildFrame(show, profiles, state, options_.camera, FrameOptions{.mergeCells = options_.mergeCells});
   if (!frame) return frame.error();
   const std::string ext = out.extension().string();
   if (ext != ".pfm" && ext != ".png") return Error{out.string(), "", "unknown image type (expected .png or .pfm)"};
