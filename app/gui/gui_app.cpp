@@ -178,6 +178,12 @@ void followHeads(Gui& gui) {
     gui.heads->reset(gui.stage, gui.nowS);
     gui.headsDoc = gui.doc.get();
   }
+  // Live, the heads start where the first DMX puts them (as `haze live`), once per receiver.
+  static const LiveReceiver* seededFor = nullptr;
+  if (gui.live && gui.live.get() != seededFor && gui.live->stats().good > 0) {
+    gui.heads->reset(gui.stage, gui.nowS);
+    seededFor = gui.live.get();
+  }
   gui.stage = gui.heads->advance(gui.stage, gui.nowS, !gui.live);
 }
 
