@@ -62,6 +62,14 @@ MovementFollower::Axes MovementFollower::axesOf(int id, const Attributes& a, con
   x.pan = a.panDeg;
   x.tilt = a.tiltDeg;
   x.zoom = a.zoomDeg.value_or(*profile ? (*profile)->fieldAngleDeg : 0.0f);
+  // A head cannot travel past its ranges (which also bounds the simulation of a command far
+  // outside them: at most range / the slowest speed).
+  if (const Profile* p = *profile) {
+    const auto within = [](double v, const Range& r) { return std::clamp<double>(v, std::min(r.min, r.max), std::max(r.min, r.max)); };
+    x.pan = within(x.pan, p->panDeg);
+    x.tilt = within(x.tilt, p->tiltDeg);
+    x.zoom = within(x.zoom, p->zoomDeg);
+  }
   return x;
 }
 
