@@ -6,7 +6,7 @@ JOBS       ?= $(shell nproc)
 DEMO       := examples/demo/demo.haze.json
 HAZE       := $(BUILD)/app/haze
 
-.PHONY: all deps configure build run test test-fast test-asan node-tools clean
+.PHONY: all deps configure build run test test-fast test-asan node-tools fuzz soak gui-parallel clean
 
 all: build
 
@@ -54,6 +54,24 @@ test-asan: deps $(ASAN_BUILD)/build.ninja
 	  ctest --output-on-failure -j $(JOBS) --timeout 900 -L '^unit/'
 	@tools/headless_smoke.sh $(ASAN_BUILD)/app/haze
 
+# libFuzzer on every parser (tools/fuzz.sh): FUZZ_SECONDS each, in build-fuzz (clang, ASan, UBSan).
+FUZZ_SECONDS ?= 60
+fuzz:
+	@tools/install-deps.sh --fuzz
+	tools/fuzz.sh $(FUZZ_SECONDS)
+
+# The long versions of what ctest runs briefly: every writer killed 200 times, the GUI's save
+# killed 50 times, `haze live` under 44 Hz on 8 universes for 10 minutes, and twenty copies of
+# each GUI test at once.
+soak: build node-tools
+	bash tests/cli/kill_writers.sh $(HAZE) . 200
+	bash tests/gui/kill_save.sh $(HAZE) . 50
+	bash tests/cli/live_soak.sh $(HAZE) . 600
+	$(MAKE) gui-parallel
+
+GUI_COPIES ?= 20
+gui-parallel: build
+	tools/gui_parallel.sh $(HAZE) $(GUI_COPIES)
 
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) build-fuzz out

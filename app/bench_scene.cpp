@@ -13,15 +13,44 @@
 
 namespace haze {
 
-Venue benchVenue() {
+namespace {
+
+// How the stage grows with the rig: 16 fixtures or fewer on two 16 m truss lines in a 20 m room
+// (the scene every earlier measurement used), more on more lines (pairs, 5 m apart front to back)
+// and longer lines (at most 2 fixtures per metre), up to an arena at 1000 fixtures.
+struct BenchLayout {
+  int lines = 2, perLine = 1;
+  float lineLengthM = 16.0f, trussHeightM = 7.5f, frontZ = 1.0f, backZ = -4.0f;
+  float halfWidthM() const { return std::max(10.0f, 0.5f * lineLengthM + 2.0f); }
+  float lineZ(int line) const {
+    return lines > 1 ? frontZ + (backZ - frontZ) * static_cast<float>(line) / static_cast<float>(lines - 1) : frontZ;
+  }
+};
+
+BenchLayout benchLayout(int fixtures) {
+  BenchLayout l;
+  const float scale = std::max(1.0f, std::sqrt(static_cast<float>(fixtures) / 16.0f));
+  l.lines = 2 * static_cast<int>(std::ceil(scale / 2.0f));
+  l.perLine = std::max(1, (fixtures + l.lines - 1) / l.lines);
+  l.lineLengthM = std::max(16.0f, 0.5f * static_cast<float>(l.perLine));
+  l.trussHeightM = 7.5f * std::min(2.0f, std::sqrt(scale));
+  l.backZ = l.frontZ - 5.0f * static_cast<float>(l.lines - 1);
+  return l;
+}
+
+}  // namespace
+
+Venue benchVenue(int fixtures) {
+  const BenchLayout l = benchLayout(fixtures);
+  const float hw = l.halfWidthM(), back = std::min(-8.0f, l.backZ - 4.0f), top = l.trussHeightM + 1.5f;
   Venue v = emptyVenue();
   const int deck = addMaterial(v, "deck", glm::vec3(0.2f));
   const int walls = addMaterial(v, "walls", glm::vec3(0.35f, 0.35f, 0.38f));
   const int set = addMaterial(v, "set", glm::vec3(0.6f, 0.55f, 0.5f));
-  addBox(v, {-10, -0.1f, -8}, {10, 0, 6}, deck);  // deck and house floor
-  addBox(v, {-10, 0, -8.2f}, {10, 9, -8}, walls);  // back wall
-  addBox(v, {-10.2f, 0, -8}, {-10, 9, 6}, walls);  // side walls
-  addBox(v, {10, 0, -8}, {10.2f, 9, 6}, walls);
+  addBox(v, {-hw, -0.1f, back}, {hw, 0, 6}, deck);  // deck and house floor
+  addBox(v, {-hw, 0, back - 0.2f}, {hw, top, back}, walls);  // back wall
+  addBox(v, {-hw - 0.2f, 0, back}, {-hw, top, 6}, walls);  // side walls
+  addBox(v, {hw, 0, back}, {hw + 0.2f, top, 6}, walls);
   for (float x : {-4.0f, 0.0f, 4.0f}) addBox(v, {x - 0.3f, 0, -3.3f}, {x + 0.3f, 3.5f, -2.7f}, set);  // columns
   for (float x : {-2.5f, -1.5f, -0.5f, 0.5f, 1.5f, 2.5f})                                         // slatted panel
     addBox(v, {x - 0.3f, 4.5f, -1.05f}, {x + 0.3f, 4.6f, -0.95f}, set);
@@ -29,20 +58,27 @@ Venue benchVenue() {
 }
 
 FrameState benchFrame(int fixtures) {
+  const BenchLayout l = benchLayout(fixtures);
   FrameState f;
-  f.camera.position = {0.0f, 4.0f, 14.0f};
-  f.camera.target = {0.0f, 3.0f, -2.0f};
+  // Far enough back to see the whole width (1 for the original 20 m room).
+  const float k = l.halfWidthM() / 10.0f;
+  f.camera.position = {0.0f, 4.0f * k, -2.0f + 16.0f * k};
+  f.camera.target = {0.0f, 3.0f * k, -2.0f + 0.5f * (l.backZ - l.frontZ + 5.0f)};
   f.camera.fovYDeg = 45.0f;
+  f.camera.farM = std::max(f.camera.farM, 5.0f * l.halfWidthM());
   f.medium.scattering = 0.03f;
   f.medium.ambient = glm::vec3(0.02f);
   auto dist = std::make_shared<Distribution>(*parametricDistribution(14.0f, 20.0f, 60000.0f));
   for (int i = 0; i < fixtures; ++i) {
-    // Two truss lines, fixtures spread along them, aimed to cross on the deck.
-    const int perLine = (fixtures + 1) / 2;
-    const int line = i % 2, k = i / 2;
-    const float x = perLine > 1 ? -8.0f + 16.0f * static_cast<float>(k) / static_cast<float>(perLine - 1) : 0.0f;
-    const glm::vec3 pos(x, 7.5f, line ? -4.0f : 1.0f);
-    const glm::vec3 target(-x * 0.6f, 0.0f, line ? -1.0f : -3.0f);
+    // Fixtures spread along the lines, aimed to cross on the deck: even lines aim upstage, odd
+    // ones downstage.
+    const int line = i % l.lines, k2 = i / l.lines;
+    const float half = 0.5f * l.lineLengthM;
+    const float x = l.perLine > 1 ? -half + l.lineLengthM * static_cast<float>(k2) / static_cast<float>(l.perLine - 1)
+                                  : 0.0f;
+    const float z = l.lineZ(line);
+    const glm::vec3 pos(x, l.trussHeightM, z);
+    const glm::vec3 target(-x * 0.6f, 0.0f, line % 2 ? z + 3.0f : z - 4.0f);
     const glm::vec3 d = glm::normalize(target - pos);
     // Pan and tilt that aim the head at the target (docs/physics.md: beam = Ry(pan) Rx(tilt) (0,-1,0)).
     const float tilt = std::acos(std::clamp(-d.y, -1.0f, 1.0f));

@@ -1,6 +1,8 @@
 // The bench scene: a stage (deck, back wall, side walls, columns and a hanging panel that cut
-// shadows) with N spots on two truss lines, all in haze, seen from the house. Built in code so
-// `haze bench` needs no files; the same scene serves the reference comparison.
+// shadows) with N spots on truss lines, all in haze, seen from the house. Up to 16 fixtures it
+// is two lines in a 20 m room; larger rigs get more and longer lines in a bigger room (an arena
+// at 1000). Built in code so `haze bench` needs no files; the same scene serves the reference
+// comparison.
 #pragma once
 
 #include "renderer/scene/frame_state.h"
@@ -8,7 +10,7 @@
 
 namespace haze {
 
-Venue benchVenue();
+Venue benchVenue(int fixtures);
 FrameState benchFrame(int fixtures);
 // The accuracy study's scene (after Dobashi et al. 2000, figures 5 and 6): one spot in haze
 // with a sphere in its beam, seen from the side, so the shadow shaft is in view.

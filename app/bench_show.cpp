@@ -7,7 +7,8 @@
 
 namespace haze {
 
-Status loadBenchShow(const std::string& file, const std::string& cue, bool mergeCells, Venue& venue, FrameState& frame) {
+Status loadBenchShow(const std::string& file, const std::string& cue, const std::string& camera, bool mergeCells,
+                     Venue& venue, FrameState& frame, int& fixtures) {
   auto show = loadShow(file);
   if (!show) return show.error();
   auto profiles = loadProfiles(*show);
@@ -29,9 +30,10 @@ Status loadBenchShow(const std::string& file, const std::string& cue, bool merge
     if (!v) return v.error();
     venue = std::move(*v);
   }
-  auto f = buildFrame(*show, *profiles, state, "", FrameOptions{.mergeCells = mergeCells});
+  auto f = buildFrame(*show, *profiles, state, camera, FrameOptions{.mergeCells = mergeCells});
   if (!f) return f.error();
   frame = std::move(*f);
+  fixtures = static_cast<int>(show->fixtures.size());
   return Ok{};
 }
 

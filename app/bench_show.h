@@ -1,4 +1,4 @@
-// `haze bench --show FILE [--cue N]`: a show's cue as the bench frame, so that rigs (a multi-cell
+// `haze bench --show FILE [--cue N] [--camera NAME]`: a show's cue as the bench frame, so that rigs (a multi-cell
 // wash against separate fixtures, docs/cells.md) can be timed like the synthetic stage.
 #pragma once
 
@@ -11,8 +11,9 @@
 namespace haze {
 
 // The show's venue (an empty stage when it names none) and the full state of cue `cue` of its
-// first cue list ("" = the first cue), seen from the show's first camera; mergeCells as
-// FrameOptions::mergeCells.
-Status loadBenchShow(const std::string& file, const std::string& cue, bool mergeCells, Venue& venue, FrameState& frame);
+// first cue list ("" = the first cue), seen from camera `camera` ("" = the show's first); mergeCells
+// as FrameOptions::mergeCells. fixtures: how many the show has.
+Status loadBenchShow(const std::string& file, const std::string& cue, const std::string& camera, bool mergeCells,
+                     Venue& venue, FrameState& frame, int& fixtures);
 
 }  // namespace haze

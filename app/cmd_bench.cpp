@@ -1,8 +1,9 @@
-// haze bench [--fixtures N] [--width W --height H] [--quality Q] [--frames K] [--compare-reference] --json
+// haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME]] [--width W --height H] [--quality Q]
+//            [--frames K] [--compare-reference] --json
 //            [--planes N] [--scatter-divisor D] [--min-samples M] (override the preset's values)
-// Renders the bench scene (app/bench_scene.*) headless and reports the median time per frame
-// and per pass, with shadow and light maps cached after the first (cold) frame, as while a
-// designer looks at a cue; the cold frame is reported apart.
+// Renders the bench scene (app/bench_scene.*) or a show's cue headless and reports the median
+// time per frame and per pass, with shadow and light maps cached after the first (cold) frame,
+// as while a designer looks at a cue; the cold frame is reported apart.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -17,7 +18,10 @@
 #include "app/bench_show.h"
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/frame_builder.h"
 #include "app/render_session.h"
+#include "shows/playback.h"
+#include "shows/show.h"
 #include "renderer/context.h"
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
@@ -37,6 +41,13 @@ double processCpuMs() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return (u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3 + (u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-3;
+}
+
+// The process's peak resident memory so far, in MB (what `/usr/bin/time -f %M` reports).
+double peakMemoryMb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;
 }
 
 double median(std::vector<double> v) {
@@ -121,21 +132,26 @@ int runStudy(int width, int height) {
 }  // namespace
 
 constexpr const char* kBenchUsage =
-    "usage: haze bench [--fixtures N] [--width W --height H] [--quality Q] [--frames K] [--planes N]\n"
-    "                  [--scatter-divisor D] [--min-samples M] [--compare-reference] [--json]\n"
-    "                  [--show FILE [--cue N] [--cells separate|merged]]\n"
+    "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells separate|merged]]\n"
+    "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
+    "                  [--min-samples M] [--compare-reference] [--json]\n"
     "       haze bench --study [--width W --height H]\n"
-    "Times the synthetic stage (N fixtures) per frame; --compare-reference also renders the CPU reference\n"
-    "and gives the mean relative error; --study runs the virtual-plane accuracy study.\n"
-    "--show FILE times cue N (default: the first) of a show instead, from its first camera.\n";
+    "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
+    "first unless --cue, from the show's first camera unless --camera) per frame and per pass;\n"
+    "--cells merged draws a fixture's alike cells as one beam (docs/cells.md);\n"
+    "--compare-reference also renders the CPU reference and gives the mean relative error; --study runs\n"
+    "the virtual-plane accuracy study.\n";
 
 int runBench(const Args& args) {
-  int fixtures = 16, width = 1280, height = 720, frames = 5;
-  std::string quality = "default", showPath, cue, cells = "separate";
+  int fixtures = -1, width = 1280, height = 720, frames = 5;
+  std::string quality = "default", showPath, cue, camera, cells = "separate";
   bool json = false, compare = false, study = false;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
   CommandLine cli("haze bench", kBenchUsage);
   cli.integer("--fixtures", fixtures, 0, 4096, "0..4096")
+      .text("--show", showPath, "a show file")
+      .text("--cue", cue, "a cue number")
+      .text("--camera", camera, "a camera name")
       .integer("--width", width, 1, 16384, "1..16384")
       .integer("--height", height, 1, 16384, "1..16384")
       .integer("--frames", frames, 1, 1000, "1..1000")
@@ -146,26 +162,29 @@ int runBench(const Args& args) {
       .integer("--planes", planes, 1, 4096, "1..4096")
       .integer("--scatter-divisor", divisor, 1, 8, "1..8")
       .integer("--min-samples", minSamples, 0, 256, "0..256")
-      .text("--show", showPath, "a show file")
-      .text("--cue", cue, "a cue number")
       .choice("--cells", cells, {"separate", "merged"});
   if (auto done = cli.parse(args)) return *done;
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
   if (*q == Quality::Reference)
     return fail("--quality reference is the CPU integrator: time it against a GPU preset with --compare-reference");
+  if (!showPath.empty() && fixtures >= 0) return fail("--fixtures and --show exclude each other");
+  if (showPath.empty() && (!cue.empty() || !camera.empty())) return fail("--cue and --camera need --show");
+  if (showPath.empty() && cells != "separate") return fail("--cells needs --show");
   auto ctx = createHeadlessContext();
   if (!ctx) return fail(ctx.error().str());
   if (study) return runStudy(width, height);
   Venue venue;
   FrameState frame;
   if (showPath.empty()) {
-    venue = benchVenue();
+    fixtures = fixtures < 0 ? 16 : fixtures;
+    venue = benchVenue(fixtures);
     frame = benchFrame(fixtures);
-  } else if (Status s = loadBenchShow(showPath, cue, cells == "merged", venue, frame); !s) {
+  } else if (Status s = loadBenchShow(showPath, cue, camera, cells == "merged", venue, frame, fixtures); !s) {
     return fail(s.error().str());
   }
   RenderSettings settings = renderSettingsFor(*q, width, height);
+  settings.timePasses = true;
   if (planes > 0) settings.planes = planes;
   if (divisor > 0) settings.scatterDivisor = divisor;
   if (minSamples >= 0) settings.minSamplesPerChord = minSamples;
@@ -175,6 +194,9 @@ int runBench(const Args& args) {
   std::vector<double> total, cpu, shadow, surfaces, beams, post, meter;
   double coldMs = 0.0;
   uint64_t fragments = 0, scattering = 0;
+  int beamsInView = 0, shadowSize = 0, lightLayers = 0;
+  double beamsPerTile = 0.0;
+  std::vector<std::string> warnings;
   for (int f = 0; f <= frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = processCpuMs();
@@ -186,6 +208,8 @@ int runBench(const Args& args) {
     const PassTimes& t = (*renderer)->lastTimes();
     if (f == 0) {  // shadow maps and light maps are made here, cached after
       coldMs = ms;
+      warnings = (*renderer)->warnings();
+      for (const std::string& w : warnings) std::fprintf(stderr, "haze bench: warning: %s\n", w.c_str());
       continue;
     }
     total.push_back(ms);
@@ -197,15 +221,20 @@ int runBench(const Args& args) {
     meter.push_back(t.meterMs);
     fragments = t.planeFragments;
     scattering = t.scatteringFragments;
+    beamsInView = t.beamsDrawn;
+    beamsPerTile = t.beamsPerTile;
+    shadowSize = t.shadowMapSize;
+    lightLayers = t.lightMapLayers;
   }
   const RenderSettings rs = (*renderer)->settings();
   nlohmann::ordered_json out;
   out["device"] = (*ctx)->description();
   out["width"] = width;
   out["height"] = height;
-  out["fixtures"] = fixtures;
   if (!showPath.empty()) out["show"] = showPath;
+  out["fixtures"] = fixtures;
   out["beams"] = frame.beams.size();
+  out["beams_in_view"] = beamsInView;
   out["quality"] = quality;
   out["planes_per_beam"] = rs.planes;
   out["scatter_divisor"] = rs.scatterDivisor;
@@ -219,6 +248,11 @@ int runBench(const Args& args) {
                     {"post", median(post)}, {"meter", median(meter)}};
   out["plane_fragments"] = fragments;
   out["scattering_fragments"] = scattering;
+  out["surface_beams_per_tile"] = beamsPerTile;
+  out["shadow_map_size"] = shadowSize;
+  out["light_map_layers"] = lightLayers;
+  out["peak_memory_mb"] = peakMemoryMb();
+  out["warnings"] = warnings;
   if (compare) {
     const ImageRGB gpu = (*renderer)->readRadiance();
     const auto t0 = std::chrono::steady_clock::now();
@@ -233,13 +267,16 @@ int runBench(const Args& args) {
   if (json) {
     std::printf("%s\n", out.dump(2).c_str());
   } else {
-    std::printf("%d fixtures at %dx%d, %s (%d planes, scatter 1/%d, %d samples per chord): %.1f ms per frame "
-                "(median of %d; cold %.1f ms)\n", fixtures, width, height, quality.c_str(), rs.planes,
-                rs.scatterDivisor, rs.minSamplesPerChord, median(total), frames, coldMs);
+    std::printf("%d fixtures (%zu beams, %d in view) at %dx%d, %s (%d planes, scatter 1/%d, %d samples per chord): "
+                "%.1f ms per frame (median of %d; cold %.1f ms)\n", fixtures, frame.beams.size(), beamsInView, width,
+                height, quality.c_str(), rs.planes, rs.scatterDivisor, rs.minSamplesPerChord, median(total), frames,
+                coldMs);
     std::printf("  shadow maps %.1f  surfaces %.1f  planes %.1f  post %.1f  meter %.1f ms; %llu plane fragments (%llu "
                 "scattering); %.0f ms CPU per frame\n", median(shadow), median(surfaces), median(beams),
                 median(post), median(meter), static_cast<unsigned long long>(fragments),
                 static_cast<unsigned long long>(scattering), median(cpu));
+    std::printf("  shadow maps %d px, %d light maps, %.1f beams per lit surface tile; peak memory %.0f MB\n", shadowSize,
+                lightLayers, beamsPerTile, peakMemoryMb());
     if (compare)
       std::printf("  reference %.0f ms, mean relative error %.4f, %.0fx faster\n", out["reference_ms"].get<double>(),
                   out["mean_relative_error"].get<double>(), out["speedup_vs_reference"].get<double>());

@@ -34,6 +34,17 @@ void printText(const nlohmann::ordered_json& f) {
               << c["lens_offset"][2].get<double>() << "] m, field " << c["field_angle"].get<double>() << " deg, "
               << c["lumens"].get<double>() << " lm\n";
   }
+  // Beam optics beyond the gobo.
+  if (!f["frost"].is_null()) std::cout << "  frost up to " << f["frost"]["max"].get<double>() << " deg\n";
+  for (const auto& p : f["prisms"])
+    std::cout << "  prism \"" << p["name"].get<std::string>() << "\": " << p["facets"].get<int>() << " facets"
+              << (p["linear"].get<bool>() ? " linear" : "") << ", " << p["deflection"].get<double>() << " deg\n";
+  if (f["blades"].get<bool>()) std::cout << "  framing blades\n";
+  if (!f["shutter"].is_null()) {
+    std::cout << "  shutter";
+    for (const auto& m : f["shutter"]["modes"]) std::cout << " " << m.get<std::string>();
+    std::cout << " (up to " << f["shutter"]["max_hz"].get<double>() << " Hz)\n";
+  }
 }
 
 }  // namespace
@@ -53,6 +64,8 @@ int runFixture(const Args& args) {
     std::cerr << profile.error().str() << "\n";
     return 1;
   }
+  // What reading the profile clamped (prisms, frost beyond haze's ranges) is said, not dropped.
+  for (const std::string& w : (*profile)->warnings) std::cerr << "warning: " << w << "\n";
   nlohmann::ordered_json facts = fixtureFacts(**profile);
   if (json)
     std::cout << facts.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";

@@ -1,7 +1,9 @@
 // haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S] [--state-json OUT]
-//                [--render OUT.png]: DMX in from a console, headless. Receives for S seconds
-// (or until SIGINT/SIGTERM), then writes the fixtures' final states and/or renders them, and
-// prints what arrived (good packets, drops by reason, rate, sources) to stderr.
+//                [--render OUT.png] [--osc PORT] [--timecode] [--record-cue N]: DMX in from a
+// console, headless, optionally with haze's own cue list remote-controlled over OSC or fired by
+// ArtTimeCode. Receives for S seconds (or until SIGINT/SIGTERM), then writes the fixtures' final
+// states, renders them and/or records them into a cue, and prints what arrived (good packets,
+// drops by reason, rate, sources) to stderr.
 #include <algorithm>
 #include <cmath>
 #include <csignal>
@@ -16,10 +18,14 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/render_job.h"
+#include "app/live_record.h"
 #include "app/state_json.h"
+#include "shows/dmx/live_playback.h"
+#include "shows/dmx/osc_command.h"
 #include "shows/dmx/udp_receiver.h"
 #include "shows/movement.h"
 #include "fixtures/core/atomic_file.h"
+#include "shows/cue_number.h"
 #include "shows/show.h"
 #include "shows/show_json.h"
 
@@ -32,6 +38,8 @@ constexpr const char* kUsage =
     "                 [--artnet-port P] [--sacn-port P] [--multicast] [--on-loss hold|blackout]\n"
     "                 [--no-preview] [--camera NAME] [--width W --height H] [--quality Q]\n"
     "                 [--exposure EV] [--exposure-mode auto|manual]\n"
+    "                 [--osc PORT] [--timecode] [--cue-list NAME]\n"
+    "                 [--record-cue N [--label L]] [--no-sync]\n"
     "Listens for Art-Net (UDP 6454) and sACN E1.31 (UDP 5568); neither flag means both.\n"
     "--bind: the local IPv4 address to listen on (default 127.0.0.1: this machine only).\n"
     "sACN universe N is haze universe N; Art-Net Port-Address P (Net:Sub-Net:Universe) is\n"
@@ -39,7 +47,13 @@ constexpr const char* kUsage =
     "sACN multicast (239.255.hi.lo) is joined for the patched universes when --bind is not a\n"
     "loopback address, or with --multicast. Port 0 picks a free port (printed on stderr).\n"
     "--duration 0 (the default) runs until Ctrl-C.\n"
-    "--movement real|instant: heads follow DMX at the fixtures' speeds (default) or jump at once.\n";
+    "--movement real|instant: heads follow DMX and cues at the fixtures' speeds (default) or jump at once.\n"
+    "--osc PORT: OSC remote control on --bind:PORT (/haze/go, /haze/back, /haze/cue N,\n"
+    "/haze/fixture/ID/ATTRIBUTE V, /haze/clear; docs/live.md). --timecode: ArtTimeCode fires the\n"
+    "cues that have a \"timecode\". Both play --cue-list (default: the first list); fixtures on a\n"
+    "universe with DMX follow the console. --record-cue N: on exit, the commanded stage (where the\n"
+    "heads are going, not where they are) is recorded into cue N (tracking: only what differs) and\n"
+    "the show saved safely.\n";
 
 volatile std::sig_atomic_t gStop = 0;
 void onSignal(int) { gStop = 1; }
@@ -50,7 +64,13 @@ std::string printable(const std::string& s) {
   return out;
 }
 
-void printReport(const LiveReceiver& live, double seconds) {
+struct ControlStats {
+  uint64_t oscCommands = 0, oscRefused = 0, timecodeFired = 0;
+  double longestPassMs = 0.0;
+  int maxWaitMs = 100;
+};
+
+void printReport(const LiveReceiver& live, double seconds, const ControlStats& control, bool osc, bool timecode) {
   const DmxInputStats& s = live.stats();
   std::fprintf(stderr,
                "haze live: %.1f s: %llu datagrams, %llu good (%.1f/s), %llu malformed, %llu ignored, "
@@ -62,9 +82,35 @@ void printReport(const LiveReceiver& live, double seconds) {
                static_cast<unsigned long long>(s.terminated),
                static_cast<unsigned long long>(s.unwatched),
                static_cast<unsigned long long>(s.exceeded));
+  if (s.syncPackets || s.held)
+    std::fprintf(stderr, "haze live: synchronisation: %llu sync packets, %llu frames held for them, %llu superseded before their sync, %zu still held\n",
+                 static_cast<unsigned long long>(s.syncPackets), static_cast<unsigned long long>(s.held),
+                 static_cast<unsigned long long>(s.superseded), live.input().syncGate().heldCount());
+  for (const DiscoveredSource& d : live.input().discovered()) {
+    std::string list;
+    int shown = 0;
+    for (int u : d.universes) {
+      if (shown++ == 32) {
+        list += " ... (" + std::to_string(d.universes.size()) + " in all)";
+        break;
+      }
+      list += (list.empty() ? "" : ",") + std::to_string(u);
+    }
+    std::fprintf(stderr, "haze live: discovered sACN source %s \"%s\" universes %s (%d of %d pages)\n",
+                 d.cidString().c_str(), printable(d.name).c_str(), list.empty() ? "none" : list.c_str(), d.pages,
+                 d.lastPage + 1);
+  }
   if (const int polls = live.udp().artPollsAnswered(); polls > 0)
     std::fprintf(stderr, "haze live: answered %d ArtPoll%s (ArtPollReply: a visualiser with the patched universes)\n",
                  polls, polls == 1 ? "" : "s");
+  if (osc)
+    std::fprintf(stderr, "haze live: OSC: %llu commands done, %llu refused\n",
+                 static_cast<unsigned long long>(control.oscCommands), static_cast<unsigned long long>(control.oscRefused));
+  if (timecode)
+    std::fprintf(stderr, "haze live: timecode: %llu ArtTimeCode packets, %llu cue firings or chases\n",
+                 static_cast<unsigned long long>(s.timecodePackets), static_cast<unsigned long long>(control.timecodeFired));
+  std::fprintf(stderr, "haze live: longest pass of the receive loop: %.1f ms (a pass waits up to %d ms for input)\n",
+               control.longestPassMs, control.maxWaitMs);
   for (const auto& [reason, count] : s.malformed) {
     std::fprintf(stderr, "haze live: malformed %s: %llu\n", reason.c_str(),
                  static_cast<unsigned long long>(count));
@@ -74,9 +120,10 @@ void printReport(const LiveReceiver& live, double seconds) {
   }
   for (const DmxSourceInfo& src : live.sources()) {
     const std::string name = src.name.empty() ? "" : " \"" + printable(src.name) + "\"";
-    std::fprintf(stderr, "haze live: source %s %s%s universe %d priority %d%s\n",
+    std::fprintf(stderr, "haze live: source %s %s%s universe %d priority %d%s%s\n",
                  src.id.protocol == DmxProtocol::Sacn ? "sACN" : "Art-Net", src.id.str().c_str(),
-                 name.c_str(), src.universe, src.priority, src.winning ? "" : " (outranked)");
+                 name.c_str(), src.universe, src.priority, src.perSlotPriority ? " (per-slot priorities)" : "",
+                 src.winning ? "" : " (outranked)");
   }
 }
 
@@ -90,7 +137,9 @@ int runLive(const Args& args) {
   bool artNet = false, sacn = false;
   double duration = 0.0;
   int artNetPort = options.udp.artNetPort, sacnPort = options.udp.sacnPort;
-  bool noPreview = false;
+  bool noPreview = false, timecode = false, noSync = false;
+  int oscPort = -1;
+  std::string cueListName, recordCue, recordLabel;
   CommandLine cli("haze live", kUsage);
   cli.flag("--artnet", artNet)
       .flag("--sacn", sacn)
@@ -110,9 +159,16 @@ int runLive(const Args& args) {
       .choice("--quality", quality, {"draft", "default", "high", "reference"})
       .number("--exposure", exposure, -100, 100, "a number of EV")
       .choice("--exposure-mode", exposureMode, {"auto", "manual"})
+      .integer("--osc", oscPort, 0, 65535, "a port 0..65535")
+      .flag("--timecode", timecode)
+      .text("--cue-list", cueListName, "a cue list name")
+      .text("--record-cue", recordCue, "a cue number such as 10")
+      .text("--label", recordLabel, "a cue label")
+      .flag("--no-sync", noSync)
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
   if (noPreview) options.input.acceptPreview = false;
+  if (noSync) options.input.synchronise = false;
   render.exposureMode = parseExposureMode(exposureMode);
   if (!std::isnan(exposure)) render.exposureEv = static_cast<float>(exposure);
   const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
@@ -122,6 +178,12 @@ int runLive(const Args& args) {
   else if (quality == "reference") render.quality = Quality::Reference;
   else return fail("--quality '" + quality + "' is not one of draft|default|high|reference");
   if (!artNet && !sacn) artNet = sacn = true;
+  if (oscPort > 0 && ((artNet && oscPort == artNetPort) || (sacn && oscPort == sacnPort)))
+    return fail("--osc " + std::to_string(oscPort) + " is the Art-Net or sACN port; expected a port of its own (e.g. 9000)");
+  if (timecode && !artNet) return fail("--timecode reads ArtTimeCode, which comes over Art-Net; drop --sacn or add --artnet");
+  if (!recordLabel.empty() && recordCue.empty()) return fail("--label names the cue --record-cue records; give --record-cue N");
+  if (!recordCue.empty() && !isCueNumber(recordCue))
+    return fail("--record-cue '" + recordCue + "' is not a cue number; expected one like 10 or 1.5");
   options.udp.artNet = artNet;
   options.udp.sacn = sacn;
   options.udp.artNetPort = artNetPort;
@@ -132,6 +194,18 @@ int runLive(const Args& args) {
   if (!show) return fail(show.error().str());
   Result<ProfileSet> profiles = loadProfiles(*show);
   if (!profiles) return fail(profiles.error().str());
+  const CueList* cueList = nullptr;
+  for (const CueList& l : show->cueLists)
+    if (cueListName.empty() || l.name == cueListName) {
+      cueList = &l;
+      break;
+    }
+  if (!cueListName.empty() && !cueList) return fail(showPath + ": the show has no cue list \"" + cueListName + "\"");
+  const bool playback = oscPort >= 0 || timecode;
+  LivePlayback livePlayback(*show, *profiles, cueList);
+  if (timecode && cueList &&
+      std::none_of(cueList->cues.begin(), cueList->cues.end(), [](const Cue& c) { return !c.timecode.empty(); }))
+    std::fprintf(stderr, "haze live: --timecode: no cue of the played list has a \"timecode\"; nothing will fire\n");
 
   // Patched fixtures that DMX cannot drive are named once, so a dark fixture is explained.
   for (const FixtureDef& f : show->fixtures) {
@@ -164,37 +238,88 @@ int runLive(const Args& args) {
     std::fprintf(stderr, "haze live: sACN on %s:%d\n", options.udp.bindAddress.c_str(),
                  receiver.udp().sacnPort());
   }
+  std::unique_ptr<OscSocket> osc;
+  if (oscPort >= 0) {
+    auto o = OscSocket::open(options.udp.bindAddress, oscPort);
+    if (!o) return fail(o.error().str());
+    osc = std::move(*o);
+    std::fprintf(stderr, "haze live: OSC on %s:%d\n", options.udp.bindAddress.c_str(), osc->port());
+  }
   for (const std::string& note : receiver.udp().notes()) {
     std::fprintf(stderr, "haze live: %s\n", note.c_str());
   }
+  if (playback)
+    std::fprintf(stderr, "haze live: playing %s\n",
+                 cueList ? ("cue list \"" + cueList->name + "\" (" + std::to_string(cueList->cues.size()) + " cues)").c_str()
+                         : "no cue list (the show has none)");
 
+  // OSC and timecode are read every pass; the wait for DMX is then short so they are not late.
+  ControlStats control;
+  constexpr uint64_t kLoggedRefusals = 20;
+  const auto handleOsc = [&](std::span<const uint8_t> datagram, const std::string& from) {
+    OscParse p = parseOscCommand(datagram);
+    if (p.ok) {
+      Result<std::string> done = livePlayback.apply(p.command, LiveReceiver::nowS());
+      if (done) {
+        ++control.oscCommands;
+        std::fprintf(stderr, "haze live: OSC %s from %s: %s\n", printable(p.address).c_str(), from.c_str(), done->c_str());
+      } else {
+        p.ok = false;
+        p.error = done.error().str();
+      }
+    }
+    if (!p.ok && ++control.oscRefused <= kLoggedRefusals)
+      std::fprintf(stderr, "haze live: OSC from %s refused: %s%s\n", from.c_str(), printable(p.error).c_str(),
+                   control.oscRefused == kLoggedRefusals ? " (further refusals are only counted)" : "");
+    return oscReply(p);
+  };
   const double start = LiveReceiver::nowS();
   // The heads follow each DMX value from the moment a poll returns with it (docs/movement.md);
   // the command before it holds until then. They start where the first DMX puts them, as a rig
   // that was switched on at the console's look.
   MovementFollower heads(*show, *profiles);
-  StageState commanded = receiver.state();
+  StageState commanded =
+      playback ? livePlayback.stage(LiveReceiver::nowS(), receiver.state(), receiver.input().dmxFixtures()) : receiver.state();
   heads.reset(commanded, 0.0);
   bool seeded = false;
   while (!gStop) {
     const double elapsed = LiveReceiver::nowS() - start;
     if (duration > 0 && elapsed >= duration) break;
     const double leftMs = duration > 0 ? (duration - elapsed) * 1000.0 : 100.0;
-    receiver.poll(static_cast<int>(std::clamp(leftMs, 1.0, 100.0)));
+    control.maxWaitMs = playback ? 5 : 100;
+    const double maxWaitMs = control.maxWaitMs;
+    const int waitMs = static_cast<int>(std::clamp(leftMs, 1.0, maxWaitMs));
+    const double passStart = LiveReceiver::nowS();
+    receiver.poll(waitMs);
+    if (osc) osc->pump(handleOsc);
+    if (timecode) {
+      for (const ArtTimeCodePacket& tc : receiver.input().takeTimecodes()) {
+        const std::string what = livePlayback.timecode(tc.time, tc.fps(), LiveReceiver::nowS());
+        if (what.empty()) continue;
+        ++control.timecodeFired;
+        std::fprintf(stderr, "haze live: timecode %s: %s\n", tc.time.str().c_str(), what.c_str());
+      }
+    }
     const double now = LiveReceiver::nowS() - start;
     heads.advance(commanded, now, false);
-    commanded = receiver.state();
+    commanded = playback ? livePlayback.stage(LiveReceiver::nowS(), receiver.state(), receiver.input().dmxFixtures())
+                         : receiver.state();
     if (!seeded && receiver.stats().good > 0) {
       heads.reset(commanded, now);
       seeded = true;
     }
+    // Whole passes: a pass that found nothing waited waitMs; one that found a flood did its work.
+    control.longestPassMs = std::max(control.longestPassMs, (LiveReceiver::nowS() - passStart) * 1000.0);
   }
   const StageState& dmxState = receiver.poll(0);
-  const StageState moved = heads.advance(dmxState, LiveReceiver::nowS() - start, false);
-  const StageState& state = movement == "real" ? moved : dmxState;
+  // What the console and the cues command; the heads get there at their speeds.
+  const StageState commandedState =
+      playback ? livePlayback.stage(LiveReceiver::nowS(), dmxState, receiver.input().dmxFixtures()) : dmxState;
+  const StageState moved = heads.advance(commandedState, LiveReceiver::nowS() - start, false);
+  const StageState& state = movement == "real" ? moved : commandedState;
   sigaction(SIGINT, &oldInt, nullptr);
   sigaction(SIGTERM, &oldTerm, nullptr);
-  printReport(receiver, LiveReceiver::nowS() - start);
+  printReport(receiver, LiveReceiver::nowS() - start, control, osc != nullptr, timecode);
 
   int status = 0;
   if (!stateJson.empty()) {
@@ -204,6 +329,23 @@ int runLive(const Args& args) {
   if (!renderOut.empty()) {
     if (Status s = renderStateToFile(*show, *profiles, state, render, renderOut); !s) {
       status = fail(s.error().str());
+    }
+  }
+  if (!recordCue.empty()) {
+    // What DMX (and OSC's programmer) put on stage; fixtures nothing drove are left out, so a
+    // universe the console does not send cannot wipe the tracked look.
+    std::set<int> fixtures = receiver.input().dmxFixtures();
+    for (const auto& [id, v] : livePlayback.programmer()) fixtures.insert(id);
+    if (fixtures.empty()) {
+      status = fail("--record-cue " + recordCue + ": no fixture received DMX; nothing recorded and " + showPath +
+                    " left as it was");
+    } else {
+      // The playback above references the show; it is not used after this point.
+      Result<std::string> rec =
+          recordLiveCue(*show, *profiles, commandedState, fixtures,
+                        LiveRecord{cueList ? cueList->name : "", recordCue, recordLabel});
+      if (!rec) status = fail(showPath + ": " + rec.error().str());
+      else std::fprintf(stderr, "haze live: %s\n", rec->c_str());
     }
   }
   return status;

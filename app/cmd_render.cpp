@@ -1,6 +1,8 @@
 // haze render SHOW [--cue N | --all-cues] [--at S] [--list NAME] [--camera NAME]
 //                  [--width W --height H] [--quality Q] [--exposure EV] [--exposure-mode auto|manual]
-//                  [--bloom F] -o OUT.(png|pfm) | DIR/
+//                  [--bloom F] [--exr-pixel half|float] -o OUT.(png|pfm|exr) | DIR/
+// haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--from CUE] [--to CUE] [--fps N]
+//                  [--hold S] [--duration S] [--codec NAME] [--progress] (docs/output.md)
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -8,8 +10,10 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/progress.h"
 #include "app/render_session.h"
 #include "shows/movement.h"
+#include "app/render_video.h"
 #include "shows/playback.h"
 #include "shows/show.h"
 
@@ -19,23 +23,45 @@ namespace {
 constexpr const char* kUsage =
     "usage: haze render SHOW [--cue N | --all-cues] [--at S] [--list NAME] [--camera NAME]\n"
     "                   [--width W --height H] [--quality draft|default|high|reference] [--exposure EV]\n"
-    "                   [--exposure-mode auto|manual] [--bloom F]\n"
-    "                   -o OUT.png|OUT.pfm (one image) | -o DIR/ (with --all-cues)\n"
+    "                   [--exposure-mode auto|manual] [--bloom F] [--exr-pixel half|float]\n"
+    "                   -o OUT.png|OUT.pfm|OUT.exr (one image) | -o DIR/ (with --all-cues)\n"
+    "       haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--list NAME] [--from CUE] [--to CUE]\n"
+    "                   [--fps N] [--hold S] [--duration S] [--codec NAME] [--caption] [--progress]\n"
+    "                   [--timeline FILE.json] (and the options above)\n"
     "Without --cue the first cue is rendered; --at S renders S seconds after its GO.\n"
     "PNGs are metered like a camera (auto, the default) and --exposure EV is an offset from the\n"
     "metered exposure; with --exposure-mode manual it is absolute (EV 0: 50 cd/m^2 maps to 1).\n"
     "A camera's \"exposure\" in the show is used unless these are given. PFMs are never exposed.\n"
     "--bloom F spreads the fraction F (0..1) of the light as lens glare in PNGs; PFMs stay radiometric.\n"
-    "--movement real|instant: pan, tilt and zoom at the fixtures' speeds (default) or at once.\n"
+    "EXRs hold the same radiometric L as PFMs (cd/m^2, linear Rec. 709), as half (the default) or\n"
+    "float (--exr-pixel float), with the show and cue in the header's comments.\n"
+    "--video plays cues --from..--to (default: the whole list) as on stage: GO on the first at 0 s,\n"
+    "follows fire by themselves, after a cue without one the operator waits --hold S (default 2)\n"
+    "after its fade, then GOes. --duration S cuts the video at S seconds. H.264 (libx264) in MP4 at\n"
+    "--fps N (default 25); a name with %05d writes one PNG or EXR per frame instead. --caption burns\n"
+    "the cue number, label and time into video and PNG frames (never into EXRs). --timeline FILE.json\n"
+    "gives the GO times: {\"go\": [{\"cue\": \"1\", \"at\": 0}, {\"cue\": \"2\", \"at\": 8.5}], \"end\": 20}.\n"
+    "--progress reports progress on stderr even when it is not a terminal (it always is on one).\n"
+    "--movement real|instant: pan, tilt and zoom at the fixtures' speeds (default) or at once (--at, --video).\n"
     "--cells separate|merged: one beam per cell (default), or a fixture's alike cells as one beam.\n";
+
+std::string secondsText(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", s);
+  return text;
+}
 
 }  // namespace
 
 int runRender(const Args& args) {
-  std::string showPath, cue, list, out, camera, quality = "default", exposureMode, movement = "real", cells = "separate";
+  std::string showPath, cue, list, out, camera, quality = "default", exposureMode, exrPixel = "half", movement = "real",
+                                                       cells = "separate";
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
-  bool allCues = false;
+  bool allCues = false, progress = false, caption = false;
+  std::string video, from, to, codec = "libx264", timelineFile;
+  double hold = 2.0, duration = 0.0;
+  int fps = 25;
   CommandLine cli("haze render", kUsage);
   cli.text("--cue", cue, "a cue number")
       .flag("--all-cues", allCues)
@@ -50,11 +76,27 @@ int runRender(const Args& args) {
       .number("--bloom", bloom, 0, 1, "a fraction 0..1")
       .choice("--movement", movement, {"real", "instant"})
       .choice("--cells", cells, {"separate", "merged"})
+      .choice("--exr-pixel", exrPixel, {"half", "float"})
       .text("-o|--output", out, "a file or a folder")
+      .text("--video", video, "a video file (OUT.mp4) or an image sequence (OUT-%05d.png)")
+      .text("--from", from, "a cue number")
+      .text("--to", to, "a cue number")
+      .integer("--fps", fps, 1, 240, "frames per second, 1..240")
+      .number("--hold", hold, 0, 3600, "seconds 0..3600")
+      .number("--duration", duration, 0, 86400, "seconds 0..86400")
+      .text("--codec", codec, "an FFmpeg encoder name")
+      .flag("--progress", progress)
+      .flag("--caption", caption)
+      .text("--timeline", timelineFile, "a JSON file of GO times")
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
   const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
-  if (out.empty()) return fail("no output given: -o OUT.png, -o OUT.pfm, or -o DIR/ with --all-cues");
+  if (!video.empty() && (!out.empty() || allCues || !cue.empty() || at >= 0))
+    return fail("--video renders a cue range (--from, --to): -o, --all-cues, --cue and --at are for stills");
+  if (video.empty() && (!from.empty() || !to.empty()))
+    return fail("--from and --to choose the cues of a --video");
+  if (out.empty() && video.empty())
+    return fail("no output given: -o OUT.png|OUT.pfm|OUT.exr, -o DIR/ with --all-cues, or --video OUT.mp4");
   if (allCues && !cue.empty()) return fail("--cue and --all-cues exclude each other");
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
@@ -69,16 +111,46 @@ int runRender(const Args& args) {
 
   RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
                            .quality = *q, .exposureMode = parseExposureMode(exposureMode),
-                           .bloom = static_cast<float>(bloom), .mergeCells = cells == "merged"};
+                           .bloom = static_cast<float>(bloom), .mergeCells = cells == "merged",
+                           .exrPixel = *parseExrPixel(exrPixel), .progress = progress};
   if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
   auto session = RenderSession::open(*show, options);
   if (!session) return fail(session.error().str());
+
+  if (!video.empty()) {
+    VideoJob job{.list = cueList, .from = 0, .to = cueList->cues.size() - 1, .holdS = hold, .durationS = duration,
+                 .fps = fps, .codec = codec, .out = video, .progress = progress, .caption = caption,
+                 .realMovement = movement == "real"};
+    for (auto [number, index] : {std::pair{&from, &job.from}, std::pair{&to, &job.to}}) {
+      if (number->empty()) continue;
+      auto found = findCue(*cueList, *number);
+      if (!found) return fail(showPath + ": " + found.error().message);
+      *index = *found;
+    }
+    if (!timelineFile.empty()) {
+      if (!from.empty() || !to.empty()) return fail("--timeline gives the GOs itself: no --from or --to with it");
+      auto timeline = readTimeline(timelineFile, *cueList, hold);
+      if (!timeline) return fail(timeline.error().str());
+      job.timeline = std::move(*timeline);
+    }
+    if (job.from > job.to)
+      return fail("--from " + cueList->cues[job.from].number + " comes after --to " + cueList->cues[job.to].number +
+                  " in cue list '" + cueList->name + "'");
+    const auto s = renderVideo(**session, *show, *profiles, job);
+    if (!s) return fail(s.error().str());
+    std::printf("%s\n", video.c_str());
+    return 0;
+  }
 
   auto renderCue = [&](size_t index, const std::filesystem::path& file) -> bool {
     const StageState state = at < 0 ? trackedState(*show, *profiles, *cueList, index)
                              : movement == "real" ? movingStateAt(*show, *profiles, *cueList, index, at)
                                                   : stateAt(*show, *profiles, *cueList, index, at);
-    const Status s = (*session)->renderToFile(*show, *profiles, state, file);
+    const Cue& c = cueList->cues[index];
+    const std::string comment = "haze render of " + showPath + ", cue list " + cueList->name + ", cue " + c.number +
+                                (c.label.empty() ? "" : " \"" + c.label + "\"") +
+                                (at >= 0 ? ", " + secondsText(at) + " s after GO" : ", its full state");
+    const Status s = (*session)->renderToFile(*show, *profiles, state, file, comment);
     if (!s) {
       fail(s.error().str());
       return false;
@@ -91,9 +163,11 @@ int runRender(const Args& args) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) return fail(out + ": cannot create the folder: " + ec.message());
+    Progress report("haze render", "cues", static_cast<long>(cueList->cues.size()), progress);
     for (size_t i = 0; i < cueList->cues.size(); ++i) {
       const auto file = dir / ("cue-" + cueList->cues[i].number + ".png");
       if (!renderCue(i, file)) return 1;
+      report.step(static_cast<long>(i + 1));
       std::printf("%s\n", file.string().c_str());
     }
     return 0;

@@ -26,7 +26,9 @@ constexpr const char* kUsage =
     "  --follow     let follows fire after cue N, as on stage\n"
     "  --movement   real (default): pan, tilt and zoom at the fixtures' speeds; instant: at once\n"
     "  --json       {\"<fixture id>\": {\"intensity\", \"pan\", \"tilt\", \"color\", \"zoom\", \"gobo\", "
-    "\"gobo_rotation\", \"iris\"}}\n";
+    "\"gobo_rotation\", \"iris\",\n"
+    "               \"frost\", \"prism\", \"prism_rotation\", \"blades\", \"blade_rotation\", \"shutter\",\n"
+    "               with --at also \"gate\": the shutter's opening (0..1) at that moment}}\n";
 
 }  // namespace
 
@@ -84,7 +86,9 @@ int runState(const Args& args) {
                                : stateAt(*show, *profiles, *list, *cue, atS);
   }
 
-  const nlohmann::ordered_json out = stageStateJson(*show, *profiles, state);
+  // The strobe runs on the playback clock, which starts at GO: --at is also the gate's time.
+  const bool atGiven = atS < 1e9;
+  const nlohmann::ordered_json out = stageStateJson(*show, *profiles, state, atGiven ? std::optional<double>(atS) : std::nullopt);
   if (json) {
     std::cout << out.dump(2) << "\n";
   } else {

@@ -2,6 +2,7 @@
 // lit fixture). This is the only place where shows meet the renderer.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "fixtures/core/result.h"
@@ -11,12 +12,22 @@
 
 namespace haze {
 
+// When a frame is taken, for the shutter (docs/physics.md, "Strobe"): its gate is averaged over
+// [timeS, timeS + exposureS] of the playback clock. A frame without one is a still: a strobing
+// shutter shows its mean (the duty).
+struct FrameTime {
+  double timeS = 0.0;
+  double exposureS = 0.0;
+};
+
 struct FrameOptions {
   // Cells of one fixture that share a light map drawn as one beam (docs/cells.md, "Cost").
   bool mergeCells = false;
+  std::optional<FrameTime> time;  // none: a still
 };
 
 // cameraName "" = the show's first camera (or a default view of the stage when it has none).
+// A fixture with a prism in becomes one beam per facet (docs/physics.md, "Prism").
 Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, const StageState& state,
                               const std::string& cameraName, const FrameOptions& options = {});
 // The renderer's shadow-map cache key of a pose (equal keys promise equal poses).

@@ -24,6 +24,8 @@ constexpr const char* kHelp =
     "  haze bench [--fixtures N] [--width W --height H] [--quality Q] [--compare-reference] [--study] --json\n"
     "  haze compare IMAGE.pfm REFERENCE.pfm [--threshold F] [--max-error E] [--json]   accuracy metric\n"
     "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S] [--state-json OUT] [--render OUT.png]\n"
+    "  haze sheet SHOW -o SHEET.pdf [--list NAME] [--camera NAME]... [--quality Q]   the review sheet\n"
+    "  haze --version                       version, git commit, the OpenGL the renderer gets\n"
     "Each subcommand takes --help.\n";
 
 #ifndef HAZE_HAS_GUI
@@ -58,6 +60,8 @@ int main(int argc, char** argv) {
   if (cmd == "live") return haze::runLive(rest);
   if (cmd == "import-mvr") return haze::runImportMvr(rest);
   if (cmd == "open") return openGui(rest);
+  if (cmd == "sheet") return haze::runSheet(rest);
+  if (cmd == "--version" || cmd == "version") return haze::runVersion(rest);
   if (cmd == "--help" || cmd == "-h" || cmd == "help") {
     std::fputs(kHelp, stdout);
     return 0;

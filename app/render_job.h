@@ -7,6 +7,7 @@
 #include <string>
 
 #include "fixtures/core/result.h"
+#include "renderer/output/exr.h"
 #include "renderer/scene/exposure.h"
 #include "shows/playback.h"
 #include "shows/show.h"
@@ -26,6 +27,8 @@ struct RenderJobOptions {
   std::optional<float> exposureEv;
   float bloom = 0.0f;  // PNG only
   bool mergeCells = false;  // docs/cells.md, "Cost": a fixture's alike cells as one beam
+  ExrPixel exrPixel = ExrPixel::Half;  // EXR only
+  bool progress = false;  // --progress: report even when stderr is not a terminal (app/progress.h)
 };
 
 // The exposure a PNG of this show gets with these options.
@@ -33,7 +36,7 @@ ExposureChoice exposureChoiceFor(const Show& show, const RenderJobOptions& optio
 // "auto" or "manual" (the command lines' --exposure-mode); "" leaves the mode unset.
 std::optional<ExposureMode> parseExposureMode(const std::string& name);
 
-// Writes out as .png (exposure, tone curve, sRGB) or .pfm (radiometric float).
+// Writes out as .png (exposure, tone curve, sRGB), .pfm or .exr (radiometric).
 Status renderStateToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
                          const RenderJobOptions& options, const std::filesystem::path& out);
 

@@ -1,8 +1,10 @@
 #include "app/render_session.h"
 
+#include <cstdio>
 #include <cstdlib>
 
 #include "app/frame_builder.h"
+#include "app/progress.h"
 #include "renderer/reference/reference.h"
 #include "renderer/scene/image.h"
 
@@ -28,6 +30,7 @@ RenderSettings renderSettingsFor(Quality q, int width, int height) {
     case Quality::Reference:
       s = {.width = width, .height = height, .lightMapSize = 1024, .shadowMapSize = 2048, .planes = 128,
            .scatterDivisor = 1, .frames = 4, .minSamplesPerChord = 16};
+      s.shadowTexelBudget = int64_t{64} << 20;  // 256 MB: eight 2048 px maps, 76 of 928 px
       break;
   }
   return s;
@@ -64,30 +67,53 @@ Result<std::unique_ptr<RenderSession>> RenderSession::open(const Show& show, con
   return session;
 }
 
-Status RenderSession::renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
-                                   const std::filesystem::path& out) {
+Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const StageState& state, bool reportRows) {
   auto frame = buildFrame(show, profiles, state, options_.camera, FrameOptions{.mergeCells = options_.mergeCells});
   if (!frame) return frame.error();
-  const std::string ext = out.extension().string();
-  if (ext != ".pfm" && ext != ".png") return Error{out.string(), "", "unknown image type (expected .png or .pfm)"};
+  referenceImage_.reset();
   if (options_.quality == Quality::Reference) {
     // The CPU reference integrator (renderer/reference), the oracle of the accuracy tests;
-    // its image goes through the GPU's display encoding for PNGs.
-    const ImageRGB image = renderReference(venue_, *frame, options_.width, options_.height);
-    if (ext == ".pfm") return writePfm(image, out);
-    renderer_->setRadiance(image);
+    // its image goes through the GPU's display encoding.
+    Progress progress("haze render (reference)", "rows", options_.height, options_.progress);
+    ReferenceOptions reference;
+    if (reportRows) reference.onRows = [&progress](int done, int) { progress.step(done); };
+    referenceImage_ = renderReference(venue_, *frame, options_.width, options_.height, reference);
+    if (reportRows) progress.step(options_.height);  // the last row may have been another thread's
+    renderer_->setRadiance(*referenceImage_);
   } else {
     renderer_->render(*frame);
+    for (const std::string& w : renderer_->warnings()) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
   }
-  if (ext == ".pfm") return writePfm(renderer_->readRadiance(), out);
-  if (ext == ".png") {
-    const ExposureChoice choice = exposureChoiceFor(show, options_);
-    const float metered = choice.mode == ExposureMode::Auto ? renderer_->meter().ev : 0.0f;
-    lastExposureEv_ = exposureEvFor(choice, metered);
-    const auto rgb = renderer_->readDisplay({.exposureEv = lastExposureEv_, .bloom = options_.bloom});
-    return writePng8(rgb, options_.width, options_.height, out);
-  }
-  return Error{out.string(), "", "unknown image type (expected .png or .pfm)"};
+  return Ok{};
+}
+
+ImageRGB RenderSession::radiance() const { return referenceImage_ ? *referenceImage_ : renderer_->readRadiance(); }
+
+std::vector<unsigned char> RenderSession::display(const Show& show) {
+  const ExposureChoice choice = exposureChoiceFor(show, options_);
+  const float metered = choice.mode == ExposureMode::Auto ? renderer_->meter().ev : 0.0f;
+  lastExposureEv_ = exposureEvFor(choice, metered);
+  return renderer_->readDisplay({.exposureEv = lastExposureEv_, .bloom = options_.bloom});
+}
+
+Status RenderSession::renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
+                                   const std::filesystem::path& out, const std::string& comment) {
+  const std::string ext = out.extension().string();
+  if (ext != ".pfm" && ext != ".png" && ext != ".exr")
+    return Error{out.string(), "", "unknown image type (expected .png, .pfm or .exr)"};
+  if (Status s = draw(show, profiles, state, true); !s) return s;
+  if (ext == ".png") return writePng8(display(show), options_.width, options_.height, out);
+  if (ext == ".pfm") return writePfm(radiance(), out);
+  return writeExrWarning(radiance(), out, {.pixel = options_.exrPixel, .comment = comment});
+}
+
+Status writeExrWarning(const ImageRGB& image, const std::filesystem::path& out, const ExrOptions& options) {
+  auto written = writeExr(image, out, options);
+  if (!written) return written.error();
+  if (written->clampedPixels > 0)
+    std::fprintf(stderr, "haze: warning: %s: %zu pixels brighter than half's largest value (65504 cd/m^2) "
+                 "were clamped to it; --exr-pixel float keeps them\n", out.string().c_str(), written->clampedPixels);
+  return Ok{};
 }
 
 ExposureChoice exposureChoiceFor(const Show& show, const RenderJobOptions& options) {

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "app/render_job.h"
 #include "fixtures/core/result.h"
@@ -16,12 +18,25 @@ namespace haze {
 RenderSettings renderSettingsFor(Quality q, int width, int height);
 Result<Quality> parseQuality(const std::string& name);
 
+// writeExr, with a warning on stderr naming the file when half clamped pixels.
+Status writeExrWarning(const ImageRGB& image, const std::filesystem::path& out, const ExrOptions& options);
+
 class RenderSession {
  public:
   static Result<std::unique_ptr<RenderSession>> open(const Show& show, const RenderJobOptions& options);
 
+  // The pieces of renderToFile, for frame loops (videos): draw a state (with the CPU reference
+  // under Quality::Reference), then read the radiometric image or the display encoding, metered
+  // and exposed exactly as a PNG of renderToFile.
+  // reportRows: the CPU reference's rows as a progress line (a still; a video reports frames).
+  Status draw(const Show& show, const ProfileSet& profiles, const StageState& state, bool reportRows = false);
+  ImageRGB radiance() const;
+  std::vector<unsigned char> display(const Show& show);
+  const RenderJobOptions& options() const { return options_; }
+
+  // `comment` goes into an EXR's header (what was rendered: show, cue list, cue, time).
   Status renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
-                      const std::filesystem::path& out);
+                      const std::filesystem::path& out, const std::string& comment = {});
   // The absolute EV of the last PNG (the metered one plus the offset, under auto).
   float lastExposureEv() const { return lastExposureEv_; }
   Renderer& renderer() { return *renderer_; }
@@ -33,6 +48,7 @@ class RenderSession {
   Venue venue_;
   std::unique_ptr<Renderer> renderer_;
   float lastExposureEv_ = 0.0f;
+  std::optional<ImageRGB> referenceImage_;  // the last draw's, under Quality::Reference
 };
 
 }  // namespace haze

@@ -8,7 +8,8 @@
 
 namespace haze {
 
-nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profiles, const StageState& state) {
+nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profiles, const StageState& state,
+                                      std::optional<double> gateAtS) {
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
   for (const auto& [id, a] : state) {
     std::optional<float> zoom = a.zoomDeg;
@@ -35,6 +36,15 @@ nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profil
       }
       o["cells"] = std::move(list);
     }
+    o["frost"] = tidy(a.frost);
+    o["prism"] = a.prism;
+    o["prism_rotation"] = tidy(a.prismRotationDeg);
+    nlohmann::ordered_json blades = nlohmann::ordered_json::array();
+    for (const glm::vec2& ends : a.blades) blades.push_back({tidy(ends.x), tidy(ends.y)});
+    o["blades"] = blades;
+    o["blade_rotation"] = tidy(a.bladeRotationDeg);
+    o["shutter"] = shutterJson(a.shutter);
+    if (gateAtS) o["gate"] = tidy(shutterGate(a.shutter, *gateAtS));
     out[std::to_string(id)] = std::move(o);
   }
   return out;

@@ -1,7 +1,11 @@
 // The stage state as JSON, one shape for `haze state --json` and `haze live --state-json`:
-// {"<fixture id>": {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris"}},
-// zoom falling back to the profile's field angle (null when neither is known).
+// {"<fixture id>": {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris",
+// "frost", "prism", "prism_rotation", "blades", "blade_rotation", "shutter"[, "gate"]}}, zoom
+// falling back to the profile's field angle (null when neither is known). With gateAtS, "gate"
+// is the shutter's s(t) at that time on the playback clock (docs/show-format.md, "Strobe").
 #pragma once
+
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +14,7 @@
 
 namespace haze {
 
-nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profiles, const StageState& state);
+nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profiles, const StageState& state,
+                                      std::optional<double> gateAtS = std::nullopt);
 
 }  // namespace haze

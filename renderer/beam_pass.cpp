@@ -72,6 +72,7 @@ void BeamPass::resize(int width, int height) {
 uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, GLuint sceneDepth,
                           GLuint radianceFbo, bool accumulate) {
   const MediumState& med = frame.medium;
+  beamsDrawn_ = 0;
   if (med.scattering <= 0.0f || frame.beams.empty()) return 0;
   const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
   glBindTextureUnit(HAZE_UNIT_SCENE_DEPTH, sceneDepth);
@@ -117,7 +118,9 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, G
   for (size_t i = 0; i < frame.beams.size(); ++i) {
     const BeamOptics& o = frame.beams[i].optics;
     if (o.dimmer <= 0.0f || o.color == glm::vec3(0.0f)) continue;  // dark: adds nothing anywhere
+    if (!beams.drawn(static_cast<int>(i))) continue;  // left out by a GL limit (the renderer warns)
     footprints[i] = beamFootprint(frame.beams[i], frame.camera, aspect, beams.reachM(static_cast<int>(i)));
+    beamsDrawn_ += footprints[i].visible ? 1 : 0;
   }
 
   uint64_t fragments = 0;

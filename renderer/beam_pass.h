@@ -48,6 +48,8 @@ class BeamPass {
                   bool accumulate = false);
   const BeamPassSettings& settings() const { return settings_; }
   int accumulatedFrames() const { return accumulated_; }
+  // Beams whose in-scattering the last render drew (lit, drawn, footprint in view).
+  int beamsDrawn() const { return beamsDrawn_; }
   // Of the last render's plane fragments, those that added light (inside a cone, in front of
   // the scene); the rest were spent on footprint pixels the cones do not cover.
   uint64_t scatteringFragments() const;
@@ -61,6 +63,7 @@ class BeamPass {
   gl::VertexArray vao_;
   gl::SamplesQuery scattered_;
   int accumulated_ = 0;
+  int beamsDrawn_ = 0;
 };
 
 }  // namespace haze

@@ -2,9 +2,15 @@
 // BeamOptics::bakeLightMap), a shadow-map layer (depth from the lens), and one entry of the
 // beams storage buffer that every lighting shader reads. Light maps are re-baked only when a
 // beam's opticsKey changes, shadow maps re-rendered only when its poseKey or cone changes.
+//
+// Memory is bounded (docs/rendering.md, "Large rigs"): beams with equal optics share one
+// light-map layer, and the shadow maps' layer size shrinks so that all of them fit a texel
+// budget. Beams beyond the GL's array-layer limit cannot be drawn; update() names them.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -22,12 +28,21 @@ using GpuBeam = gpu::Beam;
 
 struct BeamResourceSettings {
   int lightMapSize = 512;
-  int shadowMapSize = 1024;
+  int shadowMapSize = 1024;  // per beam, while all of them fit the budget
+  // The shadow maps' texels together (4 bytes each): more beams than fit at shadowMapSize get
+  // smaller maps, all of one size (the array's layers).
+  int64_t shadowTexelBudget = int64_t{32} << 20;
 };
 
 struct BeamUpdateStats {
   int lightMapsBaked = 0;
   int shadowMapsRendered = 0;
+  int shadowMapSize = 0;  // the layers' size this frame (shadowMapSize or less, see the budget)
+  int lightMapLayers = 0; // distinct light maps
+  // Fixture ids of the beams that could not be drawn (a GL limit), with the reason; empty
+  // when every beam is drawn.
+  std::vector<int> notDrawn;
+  std::string notDrawnReason;
 };
 
 class BeamResources {
@@ -42,27 +57,36 @@ class BeamResources {
   int count() const { return static_cast<int>(gpuBeams_.size()); }
   const std::vector<GpuBeam>& beams() const { return gpuBeams_; }
   const BeamResourceSettings& settings() const { return settings_; }
+  // Whether beam i has its maps this frame (false: a GL limit left it out; it adds nothing).
+  bool drawn(int i) const { return drawn_[static_cast<size_t>(i)] != 0; }
+  int drawnCount() const { return static_cast<int>(std::count(drawn_.begin(), drawn_.end(), 1)); }
   // How far from its lens beam i can light anything: the farthest surface its shadow map sees
   // inside the cone (the venue's far corner when some of the cone escapes to the sky). Beyond
   // it the cone is in shadow, so the planes pass need not cover it.
   float reachM(int i) const { return reachesM_[static_cast<size_t>(i)]; }
 
  private:
-  void ensureCapacity(int beams);
+  // Makes the shadow-map array for `beams` layers of the budget's size (kept while both hold).
+  void ensureShadowCapacity(int beams);
+  // Makes the light-map array for `layers` distinct light maps (everything is baked again).
+  void ensureLightCapacity(int layers);
   // Renders a shadow map and returns the beam's reach (see reachM).
   float renderShadow(int layer, const glm::mat4& viewProj, float nearM, float farM, float cutoffRad,
                      const GpuVenue& venue, const gl::Program& program);
 
   BeamResourceSettings settings_;
-  int capacity_ = 0;
+  int maxLayers_ = 0;        // GL_MAX_ARRAY_TEXTURE_LAYERS
+  int shadowCapacity_ = 0, shadowSize_ = 0, lightCapacity_ = 0, ssboCapacity_ = 0;
   gl::Texture lightMaps_;
   gl::Texture shadowMaps_;
   gl::Buffer ssbo_;
   gl::Framebuffer shadowFbo_{"shadow_fbo"};
-  std::vector<uint64_t> opticsKeys_;   // per layer, what is baked there
-  std::vector<uint64_t> shadowKeys_;
-  std::vector<float> extents_;
-  std::vector<float> reachesM_;
+  std::vector<uint64_t> lightKeys_;    // per light-map layer, what is baked there (0: nothing)
+  std::vector<float> extents_;         // per light-map layer
+  std::vector<uint64_t> shadowKeys_;   // per beam (= shadow layer)
+  std::vector<float> reachesM_;        // per beam
+  std::vector<char> drawn_;            // per beam
+  std::vector<float> coreCos2_;        // per light-map layer: the map's core (beam_resources.cpp)
   std::vector<float> depthScratch_;
   std::vector<GpuBeam> gpuBeams_;
 };

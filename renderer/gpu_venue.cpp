@@ -24,16 +24,24 @@ constexpr GLuint kVertexBufferBinding = 0;
 GpuVenue::GpuVenue(const Venue& venue) : boundsMin_(venue.boundsMin), boundsMax_(venue.boundsMax) {
   std::vector<Vertex> verts;
   std::vector<uint32_t> idx;
+  std::vector<std::vector<uint32_t>> byMaterial(std::max<size_t>(venue.materials.size(), 1));
   for (const Primitive& p : venue.primitives) {
-    Draw d{static_cast<GLsizei>(p.indices.size()), idx.size() * sizeof(uint32_t),
-           static_cast<GLint>(verts.size()), p.material};
+    const uint32_t base = static_cast<uint32_t>(verts.size());
     for (size_t i = 0; i < p.positions.size(); ++i) {
       const glm::vec2 uv = p.uvs.empty() ? glm::vec2(0.0f) : p.uvs[i];
       verts.push_back({p.positions[i], p.normals[i], uv.x, uv.y});
     }
-    idx.insert(idx.end(), p.indices.begin(), p.indices.end());
-    draws_.push_back(d);
+    const size_t m = p.material >= 0 && static_cast<size_t>(p.material) < venue.materials.size()
+                         ? static_cast<size_t>(p.material)
+                         : 0;  // the default material
+    for (uint32_t i : p.indices) byMaterial[m].push_back(base + i);
   }
+  for (size_t m = 0; m < byMaterial.size(); ++m) {
+    if (byMaterial[m].empty()) continue;
+    draws_.push_back({static_cast<GLsizei>(byMaterial[m].size()), idx.size() * sizeof(uint32_t), 0, static_cast<int>(m)});
+    idx.insert(idx.end(), byMaterial[m].begin(), byMaterial[m].end());
+  }
+  indexCount_ = static_cast<GLsizei>(idx.size());
   glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(verts.size() * sizeof(Vertex)), verts.data(), 0);
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(idx.size() * sizeof(uint32_t)), idx.data(), 0);
   glVertexArrayVertexBuffer(vao_.id(), kVertexBufferBinding, vertices_.id(), 0, sizeof(Vertex));
@@ -69,6 +77,10 @@ GpuVenue::GpuVenue(const Venue& venue) : boundsMin_(venue.boundsMin), boundsMax_
 }
 
 void GpuVenue::bind() const { glBindVertexArray(vao_.id()); }
+
+void GpuVenue::drawAll() const {
+  if (indexCount_ > 0) glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+}
 
 void GpuVenue::draw(const Draw& d) const {
   glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,

@@ -1,5 +1,7 @@
 // The venue on the GPU: one vertex buffer and one index buffer for every primitive (world
-// space, so shadow and surface passes share them), with a draw range and material per primitive.
+// space, so shadow and surface passes share them), the indices grouped by material: one draw
+// per material for the lit pass, one draw of everything for the depth-only passes (a venue of
+// thousands of meshes costs a handful of draw calls, not thousands per shadow map).
 #pragma once
 
 #include <vector>
@@ -29,9 +31,10 @@ class GpuVenue {
     int emissiveTexture;
   };
 
-  // Binds the vertex array; then issue draw(i) for each draw range.
+  // Binds the vertex array; then issue draw(d) for each material's range, or drawAll().
   void bind() const;
   void draw(const Draw& d) const;
+  void drawAll() const;
   const std::vector<Draw>& draws() const { return draws_; }
   const std::vector<GpuMaterial>& materials() const { return materials_; }
   const gl::Texture& texture(int i) const { return textures_[static_cast<size_t>(i)]; }
@@ -42,7 +45,8 @@ class GpuVenue {
   gl::Buffer vertices_{"venue_vertices"};
   gl::Buffer indices_{"venue_indices"};
   gl::VertexArray vao_{"venue_vao"};
-  std::vector<Draw> draws_;
+  std::vector<Draw> draws_;  // one per material that has triangles
+  GLsizei indexCount_ = 0;
   std::vector<GpuMaterial> materials_;
   std::vector<gl::Texture> textures_;
   glm::vec3 boundsMin_{0.0f}, boundsMax_{0.0f};

@@ -1,6 +1,9 @@
 #include "renderer/light_tiles.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <vector>
 
 #include "renderer/camera_uniforms.h"
 #include "renderer/gl/program.h"
@@ -42,6 +45,22 @@ void LightTiles::update(const CameraState& camera, int beamCount) {
   glDispatchCompute(static_cast<GLuint>((columns_ + HAZE_TILE_GROUP_X - 1) / HAZE_TILE_GROUP_X),
                     static_cast<GLuint>(rows_), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+double LightTiles::meanBeamsPerTile() const {
+  const int tiles = columns_ * rows_;
+  if (!masks_ || tiles == 0) return 0.0;
+  std::vector<uint32_t> words(static_cast<size_t>(tiles) * maskWords_);
+  glGetNamedBufferSubData(masks_.id(), 0, static_cast<GLsizeiptr>(words.size() * 4), words.data());
+  uint64_t bits = 0;
+  int lit = 0;
+  for (int t = 0; t < tiles; ++t) {
+    int n = 0;
+    for (int w = 0; w < maskWords_; ++w) n += std::popcount(words[static_cast<size_t>(t) * maskWords_ + w]);
+    bits += static_cast<uint64_t>(n);
+    lit += n > 0;
+  }
+  return lit > 0 ? static_cast<double>(bits) / lit : 0.0;
 }
 
 void LightTiles::bind() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HAZE_SSBO_TILE_MASKS, masks_.id()); }

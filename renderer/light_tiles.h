@@ -23,6 +23,9 @@ class LightTiles {
   void update(const CameraState& camera, int beamCount);
   // The masks' buffer at its shaders/interface.h binding, for the surface pass.
   void bind() const;
+  // Of the last update: the beams a tile's pixels try, on average over the tiles that see a
+  // surface (reads the masks back, so for the bench only).
+  double meanBeamsPerTile() const;
   int columns() const { return columns_; }
   int maskWords() const { return maskWords_; }
 

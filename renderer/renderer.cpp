@@ -30,6 +30,22 @@ Status checkSize(int width, int height) {
   return Ok{};
 }
 
+// "fixtures 3, 7-9 and 12": ids in runs, for a warning that names them all in one line.
+std::string fixtureList(std::vector<int> ids) {
+  std::sort(ids.begin(), ids.end());
+  std::vector<std::string> runs;
+  for (size_t i = 0; i < ids.size();) {
+    size_t j = i;
+    while (j + 1 < ids.size() && ids[j + 1] == ids[j] + 1) ++j;
+    runs.push_back(j == i ? std::to_string(ids[i]) : std::to_string(ids[i]) + "-" + std::to_string(ids[j]));
+    i = j + 1;
+  }
+  std::string out = ids.size() == 1 && runs.size() == 1 && runs[0].find('-') == std::string::npos ? "fixture " : "fixtures ";
+  for (size_t i = 0; i < runs.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == runs.size() ? " and " : ", ") + runs[i];
+  return out;
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -44,9 +60,12 @@ struct Renderer::Impl {
   BeamPass beamPass;
   LightTiles tiles;
   gl::VertexArray emptyVao{"fullscreen_vao"};
+  // Shadow maps, surfaces, beams; used only with RenderSettings::timePasses.
+  gl::TimerQuery timers[3] = {gl::TimerQuery{"shadow_maps_time"}, gl::TimerQuery{"surfaces_time"},
+                              gl::TimerQuery{"beams_time"}};
 
   Impl(const Venue& v, const RenderSettings& s)
-      : venue(v), beams(BeamResourceSettings{s.lightMapSize, s.shadowMapSize}) {}
+      : venue(v), beams(BeamResourceSettings{s.lightMapSize, s.shadowMapSize, s.shadowTexelBudget}) {}
 
   // (Re)makes the targets whose size is the image's; nothing else depends on it.
   Status allocateTargets(int w, int h);
@@ -133,14 +152,29 @@ Status Renderer::resize(int width, int height) {
 void Renderer::render(const FrameState& frame, bool accumulate) {
   Impl& m = *impl_;
   times_ = {};
-  auto t0 = std::chrono::steady_clock::now();
-  const BeamUpdateStats stats = m.beams.update(frame, m.venue, m.shadowProgram);
-  glFinish();  // so the pass times below are the passes' own (llvmpipe renders on glFinish)
-  times_.shadowMapsMs = msSince(t0);
+  const bool timing = settings_.timePasses;
+  // Timer queries rather than glFinish: nothing waits for the GL until the results are read
+  // at the end, and not at all unless timing was asked for.
+  auto begin = [&](int pass) {
+    if (timing) glBeginQuery(GL_TIME_ELAPSED, m.timers[pass].id());
+  };
+  auto end = [&] {
+    if (timing) glEndQuery(GL_TIME_ELAPSED);
+  };
+  begin(0);
+  BeamUpdateStats stats = m.beams.update(frame, m.venue, m.shadowProgram);
+  end();
   times_.shadowMapsRendered = stats.shadowMapsRendered;
   times_.lightMapsBaked = stats.lightMapsBaked;
+  times_.shadowMapSize = stats.shadowMapSize;
+  times_.lightMapLayers = stats.lightMapLayers;
+  warnings_.clear();
+  if (!stats.notDrawn.empty())
+    warnings_.push_back(fixtureList(std::move(stats.notDrawn)) + " not drawn (" +
+                        std::to_string(frame.beams.size() - static_cast<size_t>(m.beams.drawnCount())) + " of " +
+                        std::to_string(frame.beams.size()) + " beams): " + stats.notDrawnReason);
 
-  t0 = std::chrono::steady_clock::now();
+  begin(1);
   const int w = settings_.width, h = settings_.height;
   const MediumState& med = frame.medium;
   const float sigmaT = med.extinction();
@@ -162,7 +196,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glProgramUniformMatrix4fv(m.shadowProgram.id(), HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   m.venue.bind();
-  for (const GpuVenue::Draw& d : m.venue.draws()) m.venue.draw(d);
+  m.venue.drawAll();
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
@@ -210,16 +244,24 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     glBindVertexArray(m.emptyVao.id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, m.beams.count());
   }
-  glFinish();
-  times_.surfacesMs = msSince(t0);
+  end();
 
-  t0 = std::chrono::steady_clock::now();
+  begin(2);
   times_.planeFragments =
       m.beamPass.render(frame, m.beams, m.depth.id(), m.radianceOnlyFbo.id(), accumulate);
+  end();
   times_.accumulatedFrames = m.beamPass.accumulatedFrames();
-  times_.scatteringFragments = m.beamPass.scatteringFragments();
-  glFinish();
-  times_.beamsMs = msSince(t0);
+  times_.beamsDrawn = m.beamPass.beamsDrawn();
+  if (timing) {
+    times_.scatteringFragments = m.beamPass.scatteringFragments();
+    if (settings_.tiledSurfaces && m.beams.count() > 0) times_.beamsPerTile = m.tiles.meanBeamsPerTile();
+    double* ms[3] = {&times_.shadowMapsMs, &times_.surfacesMs, &times_.beamsMs};
+    for (int i = 0; i < 3; ++i) {
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(m.timers[i].id(), GL_QUERY_RESULT, &ns);
+      *ms[i] = static_cast<double>(ns) * 1e-6;
+    }
+  }
 }
 
 ImageRGB Renderer::readRadiance() const {

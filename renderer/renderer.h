@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "fixtures/core/result.h"
@@ -30,6 +31,11 @@ struct RenderSettings {
   // Surfaces loop only over the beams that reach their 16x16 tile (renderer/light_tiles.h);
   // off, every pixel tries every beam (same image, for tests and the bench).
   bool tiledSurfaces = true;
+  // All beams' shadow maps together, in texels (4 bytes each): with more beams than fit at
+  // shadowMapSize, every map gets smaller (renderer/beam_resources.h).
+  int64_t shadowTexelBudget = int64_t{32} << 20;
+  // Times each pass with GL timer queries (lastTimes()); off, nothing waits on the GL.
+  bool timePasses = false;
 };
 
 struct DisplaySettings {
@@ -43,11 +49,16 @@ struct DisplaySettings {
   float bloom = 0.0f;
 };
 
+// What the last render did. The pass times are GL timer queries, filled only with
+// RenderSettings::timePasses; post and meter are the CPU's, their readback included.
 struct PassTimes {
   double shadowMapsMs = 0, surfacesMs = 0, beamsMs = 0, postMs = 0, meterMs = 0;
   int shadowMapsRendered = 0, lightMapsBaked = 0;
+  int shadowMapSize = 0, lightMapLayers = 0;  // see BeamUpdateStats
+  int beamsDrawn = 0;                // in-scattering footprints drawn (in view, lit)
+  double beamsPerTile = 0;           // surfaces: beams tried per lit 16x16 tile (timePasses only)
   uint64_t planeFragments = 0;       // footprint pixels times planes (or walks, when fused)
-  uint64_t scatteringFragments = 0;  // of those, the ones that added light
+  uint64_t scatteringFragments = 0;  // of those, the ones that added light (timePasses only)
   int accumulatedFrames = 0;
 };
 
@@ -77,6 +88,9 @@ class Renderer {
   // (the window's back buffer in the GUI).
   void drawDisplay(const DisplaySettings& display, unsigned int framebuffer, int x, int y, int width, int height);
   const PassTimes& lastTimes() const { return times_; }
+  // What the last render could not do (beams a GL limit left out, named by fixture id), one
+  // line each; empty when it drew everything. Callers show these to the user.
+  const std::vector<std::string>& warnings() const { return warnings_; }
   const RenderSettings& settings() const { return settings_; }
 
  private:
@@ -85,6 +99,7 @@ class Renderer {
   std::unique_ptr<Impl> impl_;
   RenderSettings settings_;
   PassTimes times_;
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace haze

@@ -132,7 +132,7 @@ struct Beam {
   vec4 zb;        // xyz beam axis, w = shadow-map layer
   vec4 color;     // rgb = dimmer * colour filter, w = tan(cutoff)
   mat4 shadowViewProj;
-  vec4 lens;      // x = r_lens, y = 1 / (pi r_lens^2), zw unused
+  vec4 lens;      // x = r_lens, y = 1 / (pi r_lens^2), z = cos^2 of the core half-angle (0: no core), w unused
 };
 
 // The std430 offsets of struct Beam's fields: the C++ compiler lays out glm types by its own

@@ -35,41 +35,55 @@ void main() {
   float zMax = min(uDepthRange.x + dz * float(uPlanes), zScene);
   vec2 seg = coneInterval(uEye, v, b.lensPos.xyz, b.zb.xyz, b.lensPos.w * b.lensPos.w, zMin, zMax);
   if (seg.y <= seg.x) discard;
-  // A ray that crosses the cone between few planes (a beam seen from the side) gets its chord
-  // split into uMinSamples equal strata instead, one jittered sample in each.
-  float zBase = uDepthRange.x;
-  if ((seg.y - seg.x) < float(uMinSamples) * dz) {
-    dz = (seg.y - seg.x) / float(uMinSamples);
-    zBase = seg.x;
-  }
-  int k0 = int(ceil((seg.x - zBase) / dz - xi));
-  int k1 = int(floor((seg.y - zBase) / dz - xi));
-  vec3 L = vec3(0.0);
+  // Where the samples go (docs/rendering.md, "Where the samples go"): the chord is walked in
+  // equal steps of the angle phi seen from the lens, t = t_c + D tan(phi), dt = D / cos^2(phi)
+  // dphi, so 1/r^2 (the integrand's fastest change, at the closest approach) is followed
+  // exactly however narrow the beam and however close the eye; a chord that passes far from
+  // the lens gets nearly equal depth steps. The planes set how many samples a chord gets: as
+  // many as planes it crosses, at least uMinSamples. A beam whose light sits in a core much
+  // narrower than its cutoff cone (a flood's 10 degrees inside light out to 80) has the core's
+  // part of the chord walked apart, with the full count, and the dim rest with a quarter.
   BeamRay ray = beamRay(b, v, len);
-  // Where the chord passes the lens closer than one step, 1/r^2 peaks within one step and
-  // equal depth steps miss it (the lamp's own pixel came out black): there the chord is
-  // walked in equal steps of the angle phi seen from the lens instead, as the reference does,
-  // t = t_c + D tan(phi), dt = D / cos^2(phi) dphi, which follows the peak exactly.
   float tc = -dot(ray.d0, v) / len;                     // metres along the ray to the closest approach
   float D = max(length(ray.d0 + (tc / len) * v), 1e-6);  // its distance from the lens
-  float t0 = seg.x * len, t1 = seg.y * len;
-  float rMin = tc < t0 ? length(ray.d0 + seg.x * v) : tc > t1 ? length(ray.d0 + seg.y * v) : D;
-  if (rMin < dz * len) {
-    int n = max(k1 - k0 + 1, uMinSamples);
-    float phi0 = atan(t0 - tc, D), phi1 = atan(t1 - tc, D);
-    float dphi = (phi1 - phi0) / float(n);
-    for (int k = 0; k < n; ++k) {
-      float phi = phi0 + (float(k) + xi) * dphi;
-      float c = cos(phi);
-      L += scatterAt(b, ray, (tc + D * tan(phi)) / len) * (D / (c * c));
-    }
-    if (L == vec3(0.0)) discard;
-    outScatter = vec4(L * dphi, 0.0);
-    return;
+  vec2 pieces[3];
+  int nPieces = 0;
+  vec2 core = b.lens.z > b.lensPos.w * b.lensPos.w
+                  ? coneInterval(uEye, v, b.lensPos.xyz, b.zb.xyz, b.lens.z, seg.x, seg.y)
+                  : seg;
+  if (core.y <= core.x) {
+    pieces[nPieces++] = seg;
+  } else {
+    if (core.x > seg.x) pieces[nPieces++] = vec2(seg.x, core.x);
+    pieces[nPieces++] = core;
+    if (seg.y > core.y) pieces[nPieces++] = vec2(core.y, seg.y);
   }
-  for (int k = k0; k <= k1; ++k) L += scatterAt(b, ray, zBase + (float(k) + xi) * dz);
+  bool hasCore = core.y > core.x;
+  vec3 L = vec3(0.0);
+  for (int p = 0; p < nPieces; ++p) {
+    vec2 piece = pieces[p];
+    bool inCore = !hasCore || piece == core;  // a chord that misses the core sees only the rest
+    int minN = inCore ? uMinSamples : max(uMinSamples / 4, 2);
+    // As many as the planes the piece spans (not a count that depends on the jitter: that
+    // biases the strata).
+    int n = max(int(round((piece.y - piece.x) / dz)), minN);
+    // tan(phi) at the piece's ends is (t - t_c) / D; the angle between them is one arctangent
+    // of the tangents' difference (atan2 keeps it right past 90 degrees), and tan(phi) goes from
+    // one step to the next by the addition theorem (a division instead of a tan per sample:
+    // the walk costs what equal depth steps cost).
+    float T0 = (piece.x * len - tc) / D, T1 = (piece.y * len - tc) / D;
+    float dphi = atan(T1 - T0, 1.0 + T0 * T1) / float(n);
+    float tau = tan(dphi), tx = tan(xi * dphi);
+    float T = (T0 + tx) / (1.0 - T0 * tx);
+    vec3 Lp = vec3(0.0);
+    for (int k = 0; k < n; ++k) {
+      Lp += scatterAt(b, ray, (tc + D * T) / len) * (1.0 + T * T);
+      T = (T + tau) / (1.0 - T * tau);
+    }
+    L += Lp * (D * dphi);
+  }
   if (L == vec3(0.0)) discard;
-  outScatter = vec4(L * dz * len, 0.0);
+  outScatter = vec4(L, 0.0);
 #else
   float z = uDepthRange.x + (float(vPlane) + xi) * dz;
   if (z > zScene || z <= uNearFar.x) discard;  // behind the first surface, or the eye

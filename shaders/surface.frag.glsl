@@ -32,8 +32,16 @@ vec3 beamIrradiance(Beam b, vec3 n) {
   vec3 I = beamIntensity(b, vPosition, wl, r);
   float cosine = dot(n, -wl);
   if (cosine <= 0.0 || I == vec3(0.0)) return vec3(0.0);
-  // Shadow lookups from a point nudged off the surface, by about a shadow texel at distance r.
-  float v = beamVisibility(b, vPosition + n * (0.0015 * r));
+  // Shadow lookups from a point nudged off the surface, so that the PCF taps (up to a texel
+  // and a half from the centre) do not compare the surface against its own depth a texel
+  // away: at least 1.5 mm per metre from the lens, and on a slanted surface a texel and a half
+  // of this beam's shadow map times the slant (a wide cutoff's frustum has texels ten times
+  // the size of a spot's; 1.5 mm per metre left its faces mottled, a diagonal lattice).
+  // 1 / tan(fov / 2) is the length of the shadow matrix's first row (a rotation times it).
+  mat4 m = b.shadowViewProj;
+  float texelPerM = 2.0 / (length(vec3(m[0][0], m[1][0], m[2][0])) * float(textureSize(uShadowMaps, 0).x));
+  float slant = sqrt(max(1.0 - cosine * cosine, 0.0));
+  float v = beamVisibility(b, vPosition + n * (max(0.0015, 1.5 * texelPerM * slant) * r));
   return I * (v * cosine * exp(-uSigmaT * r) / (r * r));
 }
 

@@ -1,6 +1,7 @@
 // The tracking model of docs/show-format.md as pure functions: tracked states by laying each cue's
 // values over the state before it, and the crossfade between two states at a moment after GO
-// (delay, then a linear fade of continuous attributes; the gobo switches when the fade starts).
+// (delay, then a linear fade of continuous attributes; gobo, prism and shutter switch when the
+// fade starts).
 #include "shows/playback.h"
 
 #include <algorithm>
@@ -30,6 +31,12 @@ void overlayValues(Attributes& a, const CueValues& v) {
     if (cv.intensity) a.cells[static_cast<size_t>(k)].intensity = *cv.intensity;
     if (cv.color) a.cells[static_cast<size_t>(k)].color = *cv.color;
   }
+  if (v.frost) a.frost = *v.frost;
+  if (v.prism) a.prism = *v.prism;
+  if (v.prismRotationDeg) a.prismRotationDeg = *v.prismRotationDeg;
+  if (v.blades) a.blades = *v.blades;
+  if (v.bladeRotationDeg) a.bladeRotationDeg = *v.bladeRotationDeg;
+  if (v.shutter) a.shutter = *v.shutter;
 }
 
 StageState defaultState(const Show& show) {
@@ -73,6 +80,11 @@ Attributes blendAttributes(const Attributes& from, const Attributes& to, double 
     a.cells[k].intensity = lerp(c0.intensity, c1.intensity, f);
     a.cells[k].color = c0.color + (c1.color - c0.color) * f;
   }
+  // Optics: prism and shutter switched with the gobo (a = to); the rest fades.
+  a.frost = lerp(from.frost, to.frost, f);
+  a.prismRotationDeg = lerp(from.prismRotationDeg, to.prismRotationDeg, f);
+  a.bladeRotationDeg = lerp(from.bladeRotationDeg, to.bladeRotationDeg, f);
+  for (size_t k = 0; k < a.blades.size(); ++k) a.blades[k] = from.blades[k] + (to.blades[k] - from.blades[k]) * f;
   // An unset zoom means the profile's field angle: fade through that number when one side is set.
   if (from.zoomDeg != to.zoomDeg) {
     std::optional<float> z0 = from.zoomDeg ? from.zoomDeg : fieldAngleDeg;

@@ -43,7 +43,7 @@ struct CueTiming {
 double fadeProgress(const CueTiming& timing, double secondsSinceGo);
 
 // One fixture's attributes at `progress` (from fadeProgress): continuous attributes linear from
-// `from` to `to`, colour per channel, gobo switched as soon as progress >= 0. An unset zoom
+// `from` to `to`, colour per channel, gobo, prism and shutter switched as soon as progress >= 0. An unset zoom
 // stands for fieldAngleDeg (the profile's field angle) while fading to or from a set one.
 Attributes blendAttributes(const Attributes& from, const Attributes& to, double progress,
                            std::optional<float> fieldAngleDeg);

@@ -74,6 +74,11 @@ struct CueValues {
   std::optional<glm::vec3> color;
   std::optional<std::string> gobo;
   std::map<int, CellValues> cells;  // by cell index (0-based; the file counts from 1)
+  // Beam optics beyond the gobo (docs/show-format.md).
+  std::optional<float> frost, prismRotationDeg, bladeRotationDeg;
+  std::optional<std::string> prism;
+  std::optional<BladeInsertions> blades;
+  std::optional<Shutter> shutter;
   bool operator==(const CueValues&) const = default;
 };
 
@@ -83,6 +88,7 @@ struct Cue {
   double fadeS = 0.0;
   double delayS = 0.0;
   std::optional<double> followS;  // empty = wait for the operator
+  std::string timecode;           // "hh:mm:ss:ff": `haze live --timecode` fires it then; "" = none
   std::map<int, CueValues> values;  // by fixture id
 };
 

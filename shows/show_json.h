@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "fixtures/core/result.h"
 #include "shows/show.h"
 
@@ -33,6 +35,8 @@ std::string showToText(const Show& show);
 FileStamp stampOf(std::string_view bytes);
 // One JSON pointer reference token ("~" -> "~0", "/" -> "~1").
 std::string pointerToken(std::string_view key);
+// A shutter as the show format writes it: "open", "closed" or {"strobe_hz", "duty"[, "mode"]}.
+nlohmann::ordered_json shutterJson(const Shutter& s);
 // The tidiest decimal double that rounds to f (0.8f -> 0.8, not 0.800000011920929).
 double tidy(float f);
 

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "shows/cue_number.h"
+#include "shows/timecode.h"
 #include "shows/show_json.h"
 
 namespace haze {
@@ -387,6 +388,79 @@ void readCellValues(Reader& r, const json& cells, const std::string& cp, CueValu
   }
 }
 
+// frost, prism, prism_rotation, blades, blade_rotation, shutter (docs/show-format.md).
+void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues& v) {
+  double x = 0;
+  if (const json* j = r.member(a, p, "frost", false))
+    if (r.number(*j, p + "/frost", 0.0, 1.0, "a frost (0..1)", x)) v.frost = static_cast<float>(x);
+  if (const json* j = r.member(a, p, "prism_rotation", false))
+    if (r.number(*j, p + "/prism_rotation", -kInf, kInf, "a prism rotation in degrees", x)) v.prismRotationDeg = static_cast<float>(x);
+  if (const json* j = r.member(a, p, "blade_rotation", false))
+    if (r.number(*j, p + "/blade_rotation", -kInf, kInf, "a blade rotation in degrees", x)) v.bladeRotationDeg = static_cast<float>(x);
+  std::string prism;
+  if (r.stringMember(a, p, "prism", false, "a prism name", prism, true)) v.prism = prism;
+  if (const json* j = r.member(a, p, "blades", false)) {
+    const std::string bp = p + "/blades";
+    if (!j->is_array() || j->size() != 4) {
+      r.problem(bp, std::string("expected four [a, b] pairs (one per blade), got ") +
+                        (j->is_array() ? "an array of " + std::to_string(j->size()) : std::string(typeName(*j))));
+    } else {
+      BladeInsertions blades{};
+      bool ok = true;
+      for (size_t k = 0; k < 4; ++k) {
+        const json& e = (*j)[k];
+        const std::string ep = bp + "/" + std::to_string(k);
+        if (!e.is_array() || e.size() != 2) {
+          r.problem(ep, std::string("expected the insertions of the blade's two ends, [a, b], got ") +
+                            (e.is_array() ? "an array of " + std::to_string(e.size()) : std::string(typeName(e))));
+          ok = false;
+          continue;
+        }
+        for (size_t end = 0; end < 2; ++end) {
+          if (r.number(e[end], ep + "/" + std::to_string(end), 0.0, 1.0, "a blade insertion", x))
+            blades[k][static_cast<int>(end)] = static_cast<float>(x);
+          else
+            ok = false;
+        }
+      }
+      if (ok) v.blades = blades;
+    }
+  }
+  if (const json* j = r.member(a, p, "shutter", false)) {
+    const std::string sp = p + "/shutter";
+    if (j->is_string()) {
+      const std::string mode = j->get<std::string>();
+      if (mode == "open" || mode == "closed")
+        v.shutter = Shutter{mode == "open" ? ShutterMode::Open : ShutterMode::Closed, 0.0f, 0.5f};
+      else
+        r.problem(sp, "expected \"open\", \"closed\" or {\"strobe_hz\": f, \"duty\": d}, got \"" + mode + "\"");
+    } else if (r.isObject(*j, sp, "a shutter: \"open\", \"closed\" or {\"strobe_hz\": f, \"duty\": d}")) {
+      r.onlyKeys(*j, sp, {"strobe_hz", "duty", "mode"});
+      Shutter sh{ShutterMode::Strobe, 0.0f, 0.5f};
+      bool ok = r.numberMember(*j, sp, "strobe_hz", true, kMinStrobeHz, kMaxStrobeHz, "a strobe rate in Hz", sh.rateHz);
+      if (const json* d = r.member(*j, sp, "duty", false)) {
+        if (r.number(*d, sp + "/duty", 0.0, 1.0, "a duty cycle", x) && x > 0.0)
+          sh.duty = static_cast<float>(x);
+        else {
+          if (x <= 0.0 && d->is_number()) r.problem(sp + "/duty", "a duty of 0 never opens; expected a duty above 0 up to 1, or \"closed\"");
+          ok = false;
+        }
+      }
+      std::string mode;
+      if (r.stringMember(*j, sp, "mode", false, "a strobe mode", mode, true)) {
+        auto m = shutterModeFromName(mode);
+        if (m && *m != ShutterMode::Open && *m != ShutterMode::Closed)
+          sh.mode = *m;
+        else {
+          r.problem(sp + "/mode", "unknown strobe mode \"" + mode + "\"; expected strobe, pulse, pulse_open, pulse_close or random");
+          ok = false;
+        }
+      }
+      if (ok) v.shutter = sh;
+    }
+  }
+}
+
 void readValues(Reader& r, const json& vals, const std::string& vp, Cue& cue) {
   if (!r.isObject(vals, vp, "values by fixture id")) return;
   for (auto it = vals.begin(); it != vals.end(); ++it) {
@@ -395,7 +469,8 @@ void readValues(Reader& r, const json& vals, const std::string& vp, Cue& cue) {
     if (!readFixtureKey(r, it.key(), p, id)) continue;
     const json& a = *it;
     if (!r.isObject(a, p, "attribute values")) continue;
-    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris", "cells"});
+    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris", "frost", "prism",
+                      "prism_rotation", "blades", "blade_rotation", "shutter", "cells"});
     CueValues v;
     double x = 0;
     auto num = [&](const char* key, double lo, double hi, const char* what, std::optional<float>& out) {
@@ -413,6 +488,7 @@ void readValues(Reader& r, const json& vals, const std::string& vp, Cue& cue) {
     std::string gobo;
     if (r.stringMember(a, p, "gobo", false, "a gobo slot name", gobo, true)) v.gobo = gobo;
     if (const json* cells = r.member(a, p, "cells", false)) readCellValues(r, *cells, p + "/cells", v);
+    readOpticsValues(r, a, p, v);
     cue.values[id] = v;
   }
 }
@@ -434,7 +510,7 @@ void readCueLists(Reader& r, const json& root, Show& show) {
           const std::string p = lp + "/cues/" + std::to_string(ci);
           Cue cue;
           if (r.isObject(c, p, "a cue")) {
-            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "values"});
+            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "timecode", "values"});
             if (r.stringMember(c, p, "number", true, "a cue number (a decimal string like \"1.5\")", cue.number, true) &&
                 !isCueNumber(cue.number)) {
               r.problem(p + "/number", "expected a cue number: digits with an optional decimal part, like \"1\" "
@@ -454,6 +530,12 @@ void readCueLists(Reader& r, const json& root, Show& show) {
                 r.problem(p + "/follow", std::string("expected a follow time in seconds (a number) or null, got ") +
                                              typeName(*j));
               }
+            }
+            if (r.stringMember(c, p, "timecode", false, "a timecode \"hh:mm:ss:ff\"", cue.timecode, false) &&
+                !cue.timecode.empty() && !parseTimecode(cue.timecode)) {
+              r.problem(p + "/timecode", "expected a timecode \"hh:mm:ss:ff\" within a day (hours 00..23, frames "
+                                         "00..29), got \"" + cue.timecode + "\"");
+              cue.timecode.clear();
             }
             if (const json* j = r.member(c, p, "values", false)) readValues(r, *j, p + "/values", cue);
           }

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "shows/cue_number.h"
+#include "shows/timecode.h"
 #include "shows/show_json.h"
 
 namespace haze {
@@ -189,7 +190,27 @@ struct Checker {
                   "profile \"" + f->profile + "\" has " +
                       (prof->cells.empty() ? std::string("no cells") : std::to_string(prof->cells.size()) + " cells") +
                       "; expected a cell number from 1 to the profile's cell count (docs/cells.md)");
+      optics(vp, v, *prof, f->profile);
     }
+  }
+
+  // The optics a profile must declare (docs/show-format.md): a cue cannot set what it lacks.
+  void optics(const std::string& vp, const CueValues& v, const Profile& prof, const std::string& name) {
+    if (v.frost && *v.frost > 0.0f && !prof.hasFrost)
+      problem(vp + "/frost", "profile \"" + name + "\" has no frost; expected no frost value (or 0)");
+    if (v.prism && *v.prism != "Open" && !prof.findPrism(*v.prism)) {
+      std::vector<std::string> names{"\"Open\""};
+      for (const PrismSpec& p : prof.prisms) names.push_back("\"" + p.name + "\"");
+      problem(vp + "/prism", "profile \"" + name + "\" has no prism \"" + *v.prism + "\"; expected one of: " + joinNames(names));
+    }
+    if (v.prismRotationDeg && prof.prisms.empty())
+      problem(vp + "/prism_rotation", "profile \"" + name + "\" has no prism; expected no prism_rotation");
+    const bool bladesIn = v.blades && std::any_of(v.blades->begin(), v.blades->end(),
+                                                  [](const glm::vec2& e) { return e.x > 0.0f || e.y > 0.0f; });
+    if (bladesIn && !prof.hasBlades)
+      problem(vp + "/blades", "profile \"" + name + "\" has no framing blades; expected no blades (or all [0, 0])");
+    if (v.bladeRotationDeg && !prof.hasBlades)
+      problem(vp + "/blade_rotation", "profile \"" + name + "\" has no framing blades; expected no blade_rotation");
   }
 
   void cueLists() {
@@ -204,6 +225,7 @@ struct Checker {
                                     std::to_string(it->second) + "; expected unique names");
       }
       std::optional<size_t> previous;  // the last cue with a readable number
+      std::optional<size_t> previousTimecode;  // the last cue with a timecode
       for (size_t ci = 0; ci < l.cues.size(); ++ci) {
         const Cue& c = l.cues[ci];
         const std::string p = lp + "/cues/" + std::to_string(ci);
@@ -220,6 +242,20 @@ struct Checker {
                                          "); expected numbers that increase down the list");
           }
           previous = ci;
+        }
+        // Timecode chases to the last cue at or before the time, so the times must rise with the list.
+        if (!c.timecode.empty()) {
+          const auto tc = parseTimecode(c.timecode);
+          if (!tc) {
+            problem(p + "/timecode", "\"" + c.timecode + "\" is not a timecode; expected \"hh:mm:ss:ff\" within a day");
+          } else if (previousTimecode) {
+            const Cue& b = l.cues[*previousTimecode];
+            if (auto tb = parseTimecode(b.timecode); tb && *tc <= *tb)
+              problem(p + "/timecode", "timecode " + c.timecode + " is not after cue \"" + b.number + "\"'s " + b.timecode +
+                                           " (" + lp + "/cues/" + std::to_string(*previousTimecode) +
+                                           "); expected timecodes that increase down the list");
+          }
+          if (tc) previousTimecode = ci;
         }
         values(p, c);
       }

@@ -94,6 +94,16 @@ ojson valuesJson(const CueValues& v) {
     }
     o["cells"] = std::move(cells);
   }
+  if (v.frost) o["frost"] = tidy(*v.frost);
+  if (v.prism) o["prism"] = *v.prism;
+  if (v.prismRotationDeg) o["prism_rotation"] = tidy(*v.prismRotationDeg);
+  if (v.blades) {
+    ojson blades = ojson::array();
+    for (const glm::vec2& ends : *v.blades) blades.push_back(ojson::array({tidy(ends.x), tidy(ends.y)}));
+    o["blades"] = blades;
+  }
+  if (v.bladeRotationDeg) o["blade_rotation"] = tidy(*v.bladeRotationDeg);
+  if (v.shutter) o["shutter"] = shutterJson(*v.shutter);
   return o;
 }
 
@@ -163,6 +173,7 @@ ojson showJson(const Show& s) {
       o["fade"] = c.fadeS;
       o["delay"] = c.delayS;
       o["follow"] = c.followS ? ojson(*c.followS) : ojson(nullptr);
+      if (!c.timecode.empty()) o["timecode"] = c.timecode;
       ojson vals = ojson::object();
       for (const auto& [id, v] : c.values) vals[std::to_string(id)] = valuesJson(v);
       o["values"] = vals;
@@ -175,6 +186,15 @@ ojson showJson(const Show& s) {
 }
 
 }  // namespace
+
+nlohmann::ordered_json shutterJson(const Shutter& s) {
+  if (!s.strobing()) return s.mode == ShutterMode::Closed ? "closed" : "open";
+  ojson o = ojson::object();
+  o["strobe_hz"] = tidy(s.rateHz);
+  o["duty"] = tidy(s.duty);
+  if (s.mode != ShutterMode::Strobe) o["mode"] = shutterModeName(s.mode);
+  return o;
+}
 
 double tidy(float f) {
   char buf[64];

@@ -6,9 +6,14 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libglm-dev nlohmann-json3-dev libstb-dev libtinygltf-dev libpugixml-dev libzip-dev
   libglfw3-dev libimgui-dev libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
-  libgtest-dev libassimp-dev
-  xvfb xdotool x11-utils imagemagick
+  libgtest-dev libassimp-dev liblo-dev liblo-tools
+  libopenexr-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libcairo2-dev
+  xvfb xdotool x11-utils imagemagick ffmpeg poppler-utils
 )
+# `make fuzz` (tools/fuzz.sh) asks for libFuzzer too: clang and its runtime.
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang-14 libclang-rt-14-dev)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

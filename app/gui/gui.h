@@ -121,6 +121,7 @@ struct Gui {
   // The status line: the last action's outcome.
   std::string status;
   bool statusError = false;
+  std::string renderWarning;  // the renderer's last warning, said once when it changes
   void say(std::string line, bool error = false) {
     status = std::move(line);
     statusError = error;

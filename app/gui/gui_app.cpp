@@ -243,6 +243,15 @@ struct ViewportRenderers {
   }
 };
 
+// A strobe slow enough for the eye to see it flash: such a stage is drawn at the clock, frame by
+// frame; faster strobes are drawn at their mean, as a still shows them (docs/physics.md, "Strobe").
+constexpr float kMaxFlashHz = 15.0f;
+bool flashing(const StageState& stage) {
+  for (const auto& [id, a] : stage)
+    if (a.intensity > 0.0f && a.shutter.strobing() && a.shutter.rateHz <= kMaxFlashHz) return true;
+  return false;
+}
+
 // What makes the stage change between frames: the view and the document's edits.
 struct ChangeWatch {
   Orbit orbit{};
@@ -273,10 +282,15 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
     gui.stage = gui.doc->stageState(gui.nowS);
     followHeads(gui);
   }
-  auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "");
+  // Each flashing frame shows the shutter's mean over about one frame's time.
+  const bool flash = flashing(gui.stage);
+  const double exposureS = std::clamp(gui.frameMs / 1000.0, 1.0 / 120.0, 0.1);
+  FrameOptions frameOptions;
+  if (flash) frameOptions.time = FrameTime{gui.nowS, exposureS};
+  auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "", frameOptions);
   if (!frameState) return frameState.error();
   frameState->camera = gui.cameraState();
-  const bool changing = watch.changing(gui);
+  const bool changing = watch.changing(gui) || flash;
   glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   Renderer* r = nullptr;
@@ -292,6 +306,10 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
       ++gui.stillFrames;
     }
   }
+  // What the renderer could not draw goes on the status line (once, not every frame).
+  const std::string warning = r->warnings().empty() ? "" : r->warnings().front();
+  if (warning != gui.renderWarning && !warning.empty()) gui.say(warning, true);
+  gui.renderWarning = warning;
   // The meter reads only new renders; the shown EV glides towards it (no flicker in a fade) and
   // the window keeps drawing until it has arrived.
   if (!settled && gui.exposureMode == ExposureMode::Auto) gui.meteredEv = r->meter().ev;

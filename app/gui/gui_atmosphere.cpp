@@ -2,6 +2,7 @@
 // ambient light (docs/physics.md), each a setAtmosphere command (a drag is one undo step); and the
 // view's render quality, exposure and bloom, which are not part of the show.
 #include <cmath>
+#include <string>
 
 #include "app/gui/gui.h"
 #include "shows/dmx/udp_receiver.h"
@@ -83,8 +84,21 @@ void drawAtmosphereTab(Gui& gui) {
     const auto sources = gui.live->sources();
     if (sources.empty()) ImGui::TextUnformatted("no source: holding the last levels");
     for (const DmxSourceInfo& src : sources)
-      ImGui::Text("%s %s  universe %d  priority %d", src.winning ? "*" : " ", src.name.c_str(), src.universe,
-                  src.priority);
+      ImGui::Text("%s %s  universe %d  priority %d%s", src.winning ? "*" : " ", src.name.c_str(), src.universe,
+                  src.priority, src.perSlotPriority ? " (per slot)" : "");
+    // Sources that announce themselves (sACN universe discovery), sending to haze or not.
+    for (const DiscoveredSource& d : gui.live->input().discovered()) {
+      std::string list;
+      int shown = 0;
+      for (int u : d.universes) {
+        if (shown++ == 32) {
+          list += " ... (" + std::to_string(d.universes.size()) + ")";
+          break;
+        }
+        list += (list.empty() ? "" : ",") + std::to_string(u);
+      }
+      ImGui::TextWrapped("discovered %s: universes %s", d.name.c_str(), list.empty() ? "none" : list.c_str());
+    }
   }
 }
 

@@ -1,6 +1,7 @@
 // The inspector for the selection (one or many fixtures): name, position and mounting rotation
 // (one fixture), pan and tilt with focus to point, and the attributes: intensity, colour (picker
-// and the profile's colour wheel), zoom, gobo, gobo rotation, iris. Shown values are the first
+// and the profile's colour wheel), zoom, gobo, gobo rotation, iris, shutter, and frost, prism and
+// blades where the profile has them. Shown values are the first
 // selected fixture's on stage; a change sets that attribute of every selected fixture in the
 // programmer (a drag is one undo step). "*" marks attributes the programmer holds.
 #include <cstdio>
@@ -12,6 +13,65 @@ namespace haze {
 namespace {
 
 const char* mark(const CueValues* p, bool held) { return p && held ? "*" : " "; }
+
+// Beam optics beyond the gobo (docs/show-format.md): the shutter for every fixture, frost, prism
+// and blades where the profile has them.
+void inspectOptics(const Profile& p, const Attributes& a, const CueValues* prog, CueValues& set, ImGuiID& item) {
+  char label[32];
+  auto track = [&](bool changed) {
+    if (changed) item = ImGui::GetItemID();
+    return changed;
+  };
+  const char* kModes[] = {"open", "closed", "strobe", "pulse", "pulse_open", "pulse_close", "random"};
+  int mode = static_cast<int>(a.shutter.mode);
+  std::snprintf(label, sizeof(label), "Shutter%s", mark(prog, prog && prog->shutter));
+  Shutter shutter = a.shutter;
+  bool changed = track(ImGui::Combo(label, &mode, kModes, 7));
+  if (changed) {
+    shutter.mode = static_cast<ShutterMode>(mode);
+    if (shutter.strobing() && shutter.rateHz <= 0.0f) shutter.rateHz = 5.0f;
+  }
+  if (shutter.strobing()) {
+    changed |= track(ImGui::SliderFloat("Strobe", &shutter.rateHz, kMinStrobeHz, 30.0f, "%.2f Hz"));
+    changed |= track(ImGui::SliderFloat("Duty", &shutter.duty, 0.01f, 1.0f, "%.2f"));
+  }
+  if (changed) set.shutter = shutter;
+  if (p.hasFrost) {
+    float frost = a.frost;
+    std::snprintf(label, sizeof(label), "Frost%s", mark(prog, prog && prog->frost));
+    if (track(ImGui::SliderFloat(label, &frost, 0.0f, 1.0f, "%.2f"))) set.frost = frost;
+  }
+  if (!p.prisms.empty()) {
+    std::snprintf(label, sizeof(label), "Prism%s", mark(prog, prog && prog->prism));
+    if (ImGui::BeginCombo(label, a.prism.c_str())) {
+      if (ImGui::Selectable("Open", a.prism == "Open")) {
+        set.prism = "Open";
+        item = ImGui::GetItemID();
+      }
+      for (const PrismSpec& pr : p.prisms)
+        if (ImGui::Selectable(pr.name.c_str(), pr.name == a.prism)) {
+          set.prism = pr.name;
+          item = ImGui::GetItemID();
+        }
+      ImGui::EndCombo();
+    }
+    float rotation = a.prismRotationDeg;
+    std::snprintf(label, sizeof(label), "Prism rot%s", mark(prog, prog && prog->prismRotationDeg));
+    if (track(ImGui::DragFloat(label, &rotation, 0.5f, -3600.0f, 3600.0f, "%.1f deg"))) set.prismRotationDeg = rotation;
+  }
+  if (p.hasBlades) {
+    ImGui::Text("Blades%s", mark(prog, prog && (prog->blades || prog->bladeRotationDeg)));
+    BladeInsertions blades = a.blades;
+    bool moved = false;
+    for (int k = 0; k < 4; ++k) {
+      std::snprintf(label, sizeof(label), "Blade %d", k + 1);
+      moved |= track(ImGui::SliderFloat2(label, &blades[static_cast<size_t>(k)].x, 0.0f, 1.0f, "%.2f"));
+    }
+    if (moved) set.blades = blades;
+    float rotation = a.bladeRotationDeg;
+    if (track(ImGui::DragFloat("Blade rot", &rotation, 0.25f, -45.0f, 45.0f, "%.1f deg"))) set.bladeRotationDeg = rotation;
+  }
+}
 
 }  // namespace
 
@@ -133,6 +193,7 @@ void drawInspector(Gui& gui) {
   float iris = a.iris;
   std::snprintf(label, sizeof(label), "Iris%s", mark(prog, prog && prog->iris));
   if (track(ImGui::SliderFloat(label, &iris, 0.05f, 1.0f, "%.2f"))) set.iris = iris;
+  inspectOptics(p, a, prog, set, item);
 
   if (set != CueValues{}) {
     Status s = doc.setSelectionValues(set, gui.mergeFor(item));

@@ -301,7 +301,8 @@ ReferenceImages renderReferenceImages(const Bvh& bvh, const FrameState& frame, i
   out.depthM.assign(count, 0.0f);
   const std::vector<ActiveBeam> beams = activeBeams(frame);
 
-  std::atomic<int> nextRow{0};
+  std::atomic<int> nextRow{0}, rowsDone{0};
+  const std::thread::id caller = std::this_thread::get_id();
   auto worker = [&] {
     for (int j = nextRow++; j < height; j = nextRow++) {
       for (int i = 0; i < width; ++i) {
@@ -313,6 +314,8 @@ ReferenceImages renderReferenceImages(const Bvh& bvh, const FrameState& frame, i
         out.inScattered.pixels[at] = px.inScattered;
         out.depthM[at] = px.depthM;
       }
+      const int done = ++rowsDone;
+      if (options.onRows && std::this_thread::get_id() == caller) options.onRows(done, height);
     }
   };
   int threads = options.threads > 0 ? options.threads

@@ -4,6 +4,7 @@
 // marches and how converged it is.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -33,6 +34,9 @@ struct ReferenceOptions {
   float lensClearanceM = 0.0f;
   // Worker threads; 0 = one per hardware thread.
   int threads = 0;
+  // Called on the calling thread after each row it finishes, with the rows done by all threads
+  // so far (a progress report; renders take minutes).
+  std::function<void(int rowsDone, int rows)> onRows;
 };
 
 // One pixel's radiance, in parts (cd/m^2 per linear RGB channel).

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace haze {
 namespace {
@@ -16,7 +17,55 @@ std::string number(double v) {
   return buf;
 }
 
+bool sameSize(const ImageRGB& a, const ImageRGB& b) {
+  return a.width == b.width && a.height == b.height && a.pixels.size() == b.pixels.size();
+}
+
+// The q-quantile of every channel value of the image.
+float quantile(const ImageRGB& image, double q) {
+  std::vector<float> v;
+  v.reserve(image.pixels.size() * 3);
+  for (const glm::vec3& p : image.pixels) v.insert(v.end(), {p.r, p.g, p.b});
+  if (v.empty()) return 0.0f;
+  const size_t k = std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size())));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
 }  // namespace
+
+Result<BeamComparison> compareBeams(const ImageRGB& actual, const ImageRGB& reference) {
+  if (!sameSize(actual, reference))
+    return Error{"", "", "the image is " + std::to_string(actual.width) + "x" + std::to_string(actual.height) +
+                             " but the reference is " + std::to_string(reference.width) + "x" +
+                             std::to_string(reference.height)};
+  float inMax = 0.0f;
+  for (const glm::vec3& p : reference.pixels) inMax = std::max({inMax, p.r, p.g, p.b});
+  if (!(inMax > 0.0f)) return Error{"", "", "the reference has no in-scattered light: nothing was compared"};
+  const float p999 = quantile(reference, 0.999);
+  const float coreCut = 0.01f * inMax, wideCut = 0.01f * p999, darkCut = 0.001f * p999;
+  BeamComparison c;
+  double core = 0.0, wide = 0.0;
+  for (size_t i = 0; i < reference.pixels.size(); ++i)
+    for (int ch = 0; ch < 3; ++ch) {
+      const float r = reference.pixels[i][ch], a = actual.pixels[i][ch];
+      if (r > wideCut) {
+        const double e = std::abs(double(a) - r) / r;
+        wide += e;
+        ++c.wideValues;
+        if (r > coreCut) {
+          core += e;
+          ++c.coreValues;
+        }
+      } else if (r < darkCut) {
+        ++c.darkValues;
+        if (a > wideCut) ++c.leakedValues;
+      }
+    }
+  if (c.coreValues > 0) c.coreError = core / double(c.coreValues);
+  if (c.wideValues > 0) c.wideError = wide / double(c.wideValues);
+  return c;
+}
 
 Result<ImageComparison> compareImages(const ImageRGB& actual, const ImageRGB& reference, float threshold) {
   if (actual.width != reference.width || actual.height != reference.height ||

@@ -30,4 +30,20 @@ struct ImageComparison {
 Result<ImageComparison> compareImages(const ImageRGB& actual, const ImageRGB& reference,
                                       float threshold = 0.01f);
 
+// The metric for the beams (docs/rendering.md, "Accuracy"), on in-scattered radiance L_in
+// alone, so that neither a bright floor pool nor a lamp's lens disc in frame (millions of
+// cd/m^2) can hide the haze: the mean relative error of L_in over the beam cores (values above
+// 1 % of the reference's largest L_in) and over the wider mask (above 1 % of its 99.9th
+// percentile over every channel of every pixel, which a lamp's few brightest pixels cannot
+// move), and the leak: of the values the reference leaves dark (below 0.1 % of that
+// percentile), the fraction the image lights above 1 % of it.
+struct BeamComparison {
+  double coreError = 0, wideError = 0;
+  size_t coreValues = 0, wideValues = 0;
+  size_t darkValues = 0, leakedValues = 0;
+  double leak() const { return darkValues > 0 ? double(leakedValues) / double(darkValues) : 0.0; }
+};
+// An error when the sizes differ or when the reference has no in-scattered light.
+Result<BeamComparison> compareBeams(const ImageRGB& actualInScattered, const ImageRGB& referenceInScattered);
+
 }  // namespace haze

@@ -11,6 +11,7 @@ namespace haze {
 namespace {
 constexpr uint8_t kId[8] = {'A', 'r', 't', '-', 'N', 'e', 't', 0};
 constexpr uint16_t kOpDmx = 0x5000;
+constexpr uint16_t kOpSync = 0x5200;
 constexpr int kHeaderBytes = 18;
 constexpr int kMinProtVer = 14;
 }  // namespace
@@ -70,6 +71,12 @@ ArtDmxParse parseArtDmx(std::span<const uint8_t> d) {
   r.status = ArtNetStatus::Ok;
   r.byte = 0;
   return r;
+}
+
+bool isArtSync(std::span<const uint8_t> d) {
+  if (d.size() < 14 || std::memcmp(d.data(), kId, sizeof kId) != 0) return false;
+  const uint16_t opCode = static_cast<uint16_t>(d[8] | (d[9] << 8));
+  return opCode == kOpSync && ((d[10] << 8) | d[11]) >= kMinProtVer;
 }
 
 }  // namespace haze

@@ -48,6 +48,9 @@ struct ArtDmxParse {
 };
 
 ArtDmxParse parseArtDmx(std::span<const uint8_t> datagram);
+// ArtSync (OpCode 0x5200, ProtVer >= 14, at least 14 bytes): output the ArtDmx held since the
+// previous ArtSync now (Art-Net 4 synchronous mode).
+bool isArtSync(std::span<const uint8_t> datagram);
 // A failed parse as an Error: place "byte N", what was wrong and what was expected.
 Error artNetError(const ArtDmxParse& parse);
 

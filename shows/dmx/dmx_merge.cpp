@@ -1,4 +1,4 @@
-// DMX merge: priority per universe, HTP among the top priority, timeouts, sequence discard.
+// DMX merge: priority per slot, HTP among the top priority, timeouts, sequence discard.
 // Each universe is re-merged from its sources' last levels whenever one of them changes; a
 // universe has at most a handful of sources, so this is a few thousand byte compares.
 #include "shows/dmx/dmx_merge.h"
@@ -49,10 +49,18 @@ bool isLateSequence(uint8_t last, uint8_t next) {
 
 DmxMerger::DmxMerger(MergeOptions options) : options_(std::move(options)) {}
 
+bool DmxMerger::watches(int universe) const {
+  return options_.universes.empty() || options_.universes.count(universe);
+}
+
+// Without per-slot priorities every slot has the universe priority; 0 there still drives the
+// slot (as priority 1), since a per-slot 0 is reserved for "not driven".
+int DmxMerger::Source::slotPriorityAt(size_t i) const {
+  return slotPriority ? (*slotPriority)[i] : std::max(priority, 1);
+}
+
 MergeVerdict DmxMerger::submit(const DmxFrame& f, double nowS) {
-  if (!options_.universes.empty() && !options_.universes.count(f.universe)) {
-    return MergeVerdict::UnwatchedUniverse;
-  }
+  if (!watches(f.universe)) return MergeVerdict::UnwatchedUniverse;
   auto uit = universes_.find(f.universe);
   if (uit == universes_.end()) {
     if (f.terminated) return MergeVerdict::Terminated;
@@ -87,9 +95,17 @@ MergeVerdict DmxMerger::submit(const DmxFrame& f, double nowS) {
   s.lastSeenS = nowS;
   s.timeoutS = f.source.protocol == DmxProtocol::Sacn ? options_.sacnTimeoutS
                                                       : options_.artNetTimeoutS;
-  const size_t n = std::min<size_t>(f.slots.size(), s.slots.size());
-  std::copy_n(f.slots.begin(), n, s.slots.begin());
-  std::fill(s.slots.begin() + static_cast<long>(n), s.slots.end(), uint8_t{0});
+  // Slots a packet leaves out are 0: levels off, or priorities "not driven".
+  DmxBuffer& into = f.perSlotPriority ? s.slotPriority.emplace() : s.slots;
+  const size_t n = std::min<size_t>(f.slots.size(), into.size());
+  std::copy_n(f.slots.begin(), n, into.begin());
+  std::fill(into.begin() + static_cast<long>(n), into.end(), uint8_t{0});
+  if (f.perSlotPriority) {
+    for (uint8_t& p : into) p = std::min<uint8_t>(p, 200);
+    s.slotPriorityAtS = nowS;
+  } else {
+    s.hasLevels = true;
+  }
   remerge(u);
   return MergeVerdict::Accepted;
 }
@@ -101,23 +117,44 @@ int DmxMerger::expire(double nowS) {
     std::erase_if(u.sources, [&](const auto& kv) {
       return nowS - kv.second.lastSeenS > kv.second.timeoutS;
     });
-    if (u.sources.size() != before) {
-      dropped += static_cast<int>(before - u.sources.size());
-      remerge(u);
+    bool changed = u.sources.size() != before;
+    dropped += static_cast<int>(before - u.sources.size());
+    // A source that stops sending 0xDD but keeps sending levels falls back to its universe
+    // priority after the same loss timeout.
+    for (auto& [id, s] : u.sources) {
+      if (s.slotPriority && nowS - s.slotPriorityAtS > s.timeoutS) {
+        s.slotPriority.reset();
+        changed = true;
+      }
     }
+    if (changed) remerge(u);
   }
   return dropped;
 }
 
+std::vector<int> DmxMerger::topPriorities(const Universe& u) {
+  std::vector<int> top(512, -1);
+  for (const auto& [id, s] : u.sources) {
+    if (!s.hasLevels) continue;
+    for (size_t i = 0; i < top.size(); ++i) {
+      const int p = s.slotPriorityAt(i);
+      if (p > 0) top[i] = std::max(top[i], p);
+    }
+  }
+  return top;
+}
+
 void DmxMerger::remerge(Universe& u) {
   ++generation_;
-  if (u.sources.empty()) return;  // the last levels stay, under either loss policy
-  int top = -1;
-  for (const auto& [id, s] : u.sources) top = std::max(top, s.priority);
-  DmxBuffer merged{};
+  const bool anyLevels = std::any_of(u.sources.begin(), u.sources.end(),
+                                     [](const auto& kv) { return kv.second.hasLevels; });
+  if (!anyLevels) return;  // the last levels stay, under either loss policy
+  const std::vector<int> top = topPriorities(u);
+  DmxBuffer merged{};  // a slot no source drives is 0
   for (const auto& [id, s] : u.sources) {
-    if (s.priority != top) continue;
-    for (size_t i = 0; i < merged.size(); ++i) merged[i] = std::max(merged[i], s.slots[i]);
+    if (!s.hasLevels) continue;
+    for (size_t i = 0; i < merged.size(); ++i)
+      if (s.slotPriorityAt(i) == top[i]) merged[i] = std::max(merged[i], s.slots[i]);
   }
   u.merged = merged;
 }
@@ -146,10 +183,12 @@ std::vector<int> DmxMerger::activeUniverses() const {
 std::vector<DmxSourceInfo> DmxMerger::sources() const {
   std::vector<DmxSourceInfo> out;
   for (const auto& [number, u] : universes_) {
-    int top = -1;
-    for (const auto& [id, s] : u.sources) top = std::max(top, s.priority);
+    const std::vector<int> top = topPriorities(u);
     for (const auto& [id, s] : u.sources) {
-      out.push_back({id, s.name, number, s.priority, s.priority == top, s.lastSeenS});
+      bool winning = false;
+      for (size_t i = 0; i < top.size() && s.hasLevels && !winning; ++i)
+        winning = top[i] > 0 && s.slotPriorityAt(i) == top[i];
+      out.push_back({id, s.name, number, s.priority, winning, s.slotPriority.has_value(), s.lastSeenS});
     }
   }
   return out;

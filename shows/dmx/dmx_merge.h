@@ -1,6 +1,7 @@
 // Merging DMX sources into one 512-slot buffer per haze universe, the way E1.31 receivers do:
-// per universe the live sources of the highest priority win and are merged slot by slot
-// Highest-Takes-Precedence; a source leaves on Stream_Terminated or after its data-loss timeout
+// per slot the live sources of the highest priority win and are merged Highest-Takes-Precedence.
+// A source's priority is its universe priority for every slot, or, while it sends per-slot
+// priorities (sACN START code 0xDD), that slot's priority, 0 meaning "not driven by this source"; a source leaves on Stream_Terminated or after its data-loss timeout
 // (E1.31: 2.5 s; Art-Net has no priority, merges at 100 and times out after 10 s, its merge
 // rule); packets whose sequence number is late by less than 20 are discarded (E1.31 6.7.2).
 // Time is passed in (seconds on any monotonic clock), so tests inject it. Bounded: a fixed
@@ -41,6 +42,7 @@ struct DmxFrame {
   int priority = 100;          // 0..200
   std::optional<uint8_t> sequence;  // empty: the sender does not sequence (Art-Net 0)
   bool terminated = false;     // sACN Stream_Terminated: the source leaves, its levels are ignored
+  bool perSlotPriority = false;  // slots are per-slot priorities (START code 0xDD), not levels
   std::span<const uint8_t> slots;  // up to 512; missing slots count as 0
 };
 
@@ -72,7 +74,8 @@ struct DmxSourceInfo {
   std::string name;
   int universe = 0;
   int priority = 0;
-  bool winning = false;  // at the universe's top priority, so part of its HTP merge
+  bool winning = false;  // at the top priority of at least one slot, so part of its HTP merge
+  bool perSlotPriority = false;  // sending per-slot priorities (0xDD)
   double lastSeenS = 0.0;
 };
 
@@ -86,6 +89,8 @@ class DmxMerger {
 
   // The merged levels of a universe (the last ones after a loss); nullptr while it never had data.
   const DmxBuffer* universe(int universe) const;
+  // Whether frames for this universe are tracked at all (options.universes).
+  bool watches(int universe) const;
   // True while a universe has lost every source under LossPolicy::Blackout: its fixtures are dark.
   bool blackedOut(int universe) const;
   std::vector<int> activeUniverses() const;
@@ -100,13 +105,18 @@ class DmxMerger {
     std::optional<uint8_t> lastSequence;
     double lastSeenS = 0.0;
     double timeoutS = 2.5;
+    bool hasLevels = false;  // a source that has sent only priorities takes no part yet
     DmxBuffer slots{};
+    std::optional<DmxBuffer> slotPriority;  // from 0xDD packets; dropped after the timeout
+    double slotPriorityAtS = 0.0;
+    int slotPriorityAt(size_t i) const;
   };
   struct Universe {
     std::map<DmxSourceId, Source> sources;
     std::optional<DmxBuffer> merged;
   };
   void remerge(Universe& u);
+  static std::vector<int> topPriorities(const Universe& u);  // per slot, -1 where none drives it
 
   MergeOptions options_;
   std::map<int, Universe> universes_;

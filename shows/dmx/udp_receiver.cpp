@@ -88,42 +88,56 @@ Result<std::unique_ptr<UdpReceiver>> UdpReceiver::open(const UdpReceiverOptions&
     auto fd = bindUdp(address, o.sacnPort, "sACN");
     if (!fd) return fd.error();
     r->sockets_.push_back({*fd, DmxProtocol::Sacn});
+    r->sacnFd_ = *fd;
     r->sacnPort_ = boundPort(*fd);
     if (!loopback || o.multicast) {
-      // A socket bound to a unicast address does not see multicast datagrams; one socket per
-      // group, bound to the group address itself, receives exactly that universe and nothing
-      // else, and the membership names the chosen interface.
-      int joined = 0;
-      for (int universe : o.sacnUniverses) {
-        if (universe < 1 || universe > 63999) continue;
-        if (joined >= o.maxMulticastGroups) {
-          r->notes_.push_back("more than " + std::to_string(o.maxMulticastGroups) +
-                              " sACN universes: the rest only by unicast");
-          break;
-        }
-        const uint32_t group = sacnMulticastGroup(universe);
-        const bool any = address == INADDR_ANY;
-        auto gfd = any ? Result<int>(r->sockets_.back().fd) : bindUdp(group, r->sacnPort_, "sACN multicast");
-        if (!gfd) {
-          r->notes_.push_back(gfd.error().message);
-          continue;
-        }
-        ip_mreq m{};
-        m.imr_multiaddr.s_addr = htonl(group);
-        m.imr_interface.s_addr = htonl(address);
-        if (setsockopt(*gfd, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m) != 0) {
-          r->notes_.push_back("cannot join " + ipString(group) + " on " + o.bindAddress + ": " +
-                              std::strerror(errno));
-          if (!any) ::close(*gfd);
-          continue;
-        }
-        if (!any) r->sockets_.push_back({*gfd, DmxProtocol::Sacn});
-        r->notes_.push_back("joined " + ipString(group) + " (sACN universe " + std::to_string(universe) + ")");
-        ++joined;
-      }
+      r->multicast_ = true;
+      r->maxMulticastGroups_ = o.maxMulticastGroups;
+      for (int universe : o.sacnUniverses) r->joinSacnUniverse(universe);
+      // Universe discovery (E1.31 8) is sent to its own universe's group.
+      r->joinSacnUniverse(kSacnDiscoveryUniverse, true);
     }
   }
   return r;
+}
+
+// A socket bound to a unicast address does not see multicast datagrams; one socket per group,
+// bound to the group address itself, receives exactly that universe and nothing else, and the
+// membership names the chosen interface. Bound to all addresses, the one socket joins.
+bool UdpReceiver::joinSacnUniverse(int universe, bool beyondLimit) {
+  if (!multicast_ || sacnPort_ == 0 || joinedUniverses_.count(universe)) return false;
+  if (universe < 1 || (universe > 63999 && universe != kSacnDiscoveryUniverse)) return false;
+  if (!beyondLimit && joinedData_ >= maxMulticastGroups_) {
+    if (!noteLimit_) notes_.push_back("more than " + std::to_string(maxMulticastGroups_) +
+                                      " sACN universes: the rest only by unicast");
+    noteLimit_ = true;
+    return false;
+  }
+  joinedUniverses_.insert(universe);
+  const uint32_t group = sacnMulticastGroup(universe);
+  const bool any = bindAddress_ == INADDR_ANY;
+  int fd = sacnFd_;
+  if (!any) {
+    auto gfd = bindUdp(group, sacnPort_, "sACN multicast");
+    if (!gfd) {
+      notes_.push_back(gfd.error().message);
+      return false;
+    }
+    fd = *gfd;
+  }
+  ip_mreq m{};
+  m.imr_multiaddr.s_addr = htonl(group);
+  m.imr_interface.s_addr = htonl(bindAddress_);
+  if (setsockopt(fd, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m) != 0) {
+    notes_.push_back("cannot join " + ipString(group) + " on " + ipString(bindAddress_) + ": " + std::strerror(errno));
+    if (!any) ::close(fd);
+    return false;
+  }
+  if (!any) sockets_.push_back({fd, DmxProtocol::Sacn});
+  if (!beyondLimit) ++joinedData_;
+  const char* what = universe == kSacnDiscoveryUniverse ? " (sACN universe discovery)" : "";
+  notes_.push_back("joined " + ipString(group) + (what[0] ? std::string(what) : " (sACN universe " + std::to_string(universe) + ")"));
+  return true;
 }
 
 UdpReceiver::~UdpReceiver() {
@@ -178,6 +192,40 @@ void UdpReceiver::answerArtPoll(int fd, const sockaddr_in& from) {
   ++artPollsAnswered_;
 }
 
+Result<std::unique_ptr<OscSocket>> OscSocket::open(const std::string& bindAddress, int port) {
+  in_addr a{};
+  if (inet_pton(AF_INET, bindAddress.c_str(), &a) != 1)
+    return Error{"", "--bind", "'" + bindAddress + "' is not an IPv4 address; expected one like 127.0.0.1"};
+  auto fd = bindUdp(ntohl(a.s_addr), port, "OSC");
+  if (!fd) return fd.error();
+  std::unique_ptr<OscSocket> s(new OscSocket());
+  s->fd_ = *fd;
+  s->port_ = boundPort(*fd);
+  return s;
+}
+
+OscSocket::~OscSocket() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+int OscSocket::pump(const std::function<std::vector<uint8_t>(std::span<const uint8_t>, const std::string&)>& handle,
+                    int maxDatagrams) {
+  int read = 0;
+  std::vector<uint8_t> buffer(65536);
+  while (read < maxDatagrams) {
+    sockaddr_in from{};
+    socklen_t fromLen = sizeof from;
+    const ssize_t n = ::recvfrom(fd_, buffer.data(), buffer.size(), 0, reinterpret_cast<sockaddr*>(&from), &fromLen);
+    if (n < 0) break;
+    ++read;
+    const std::string sender = ipString(ntohl(from.sin_addr.s_addr)) + ":" + std::to_string(ntohs(from.sin_port));
+    const std::vector<uint8_t> reply = handle(std::span<const uint8_t>(buffer.data(), static_cast<size_t>(n)), sender);
+    if (!reply.empty())
+      ::sendto(fd_, reply.data(), reply.size(), 0, reinterpret_cast<const sockaddr*>(&from), sizeof from);
+  }
+  return read;
+}
+
 double LiveReceiver::nowS() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
@@ -199,6 +247,10 @@ const StageState& LiveReceiver::poll(int waitMs) {
   // so a flood still lets the frame go on.
   for (int i = 0; i < 4 && udp_->pump(input_, nowS(), 0) > 0; ++i) {
   }
+  // Synchronization packets go to the sync address's own group: join those data names, as
+  // E1.31 receivers do (bounded by the gate's group limit).
+  const std::vector<int>& sync = input_.syncGate().sacnSyncAddresses();
+  for (; syncJoined_ < sync.size(); ++syncJoined_) udp_->joinSacnUniverse(sync[syncJoined_], true);
   return input_.poll(nowS());
 }
 

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <span>
 
 #include <netinet/in.h>
 #include <memory>
@@ -46,6 +48,9 @@ class UdpReceiver {
   int sacnPort() const { return sacnPort_; }
   const std::vector<std::string>& notes() const { return notes_; }  // "joined 239.255.0.1"...
   int artPollsAnswered() const { return artPollsAnswered_; }
+  // Joins an sACN universe's multicast group when listening for multicast (at most
+  // maxMulticastGroups data universes, unless beyondLimit: sync and discovery universes).
+  bool joinSacnUniverse(int universe, bool beyondLimit = false);
 
  private:
   UdpReceiver() = default;
@@ -61,8 +66,34 @@ class UdpReceiver {
   std::set<int> artNetUniverses_;
   bool answerArtPoll_ = true;
   int artPollsAnswered_ = 0;
+  bool multicast_ = false;
+  int sacnFd_ = -1;
+  int maxMulticastGroups_ = 64;
+  int joinedData_ = 0;
+  bool noteLimit_ = false;
+  std::set<int> joinedUniverses_;
 
   void answerArtPoll(int fd, const sockaddr_in& from);
+};
+
+// The OSC remote-control socket (shows/dmx/osc_command.h): bound like the DMX sockets, only to
+// the address given; every command gets its reply sent back to the address it came from.
+class OscSocket {
+ public:
+  static Result<std::unique_ptr<OscSocket>> open(const std::string& bindAddress, int port);
+  ~OscSocket();
+  OscSocket(const OscSocket&) = delete;
+  OscSocket& operator=(const OscSocket&) = delete;
+  // Reads what is pending (at most maxDatagrams, no waiting) and hands each to `handle` with the
+  // sender as "a.b.c.d:port"; what `handle` returns is sent back unless empty.
+  int pump(const std::function<std::vector<uint8_t>(std::span<const uint8_t>, const std::string&)>& handle,
+           int maxDatagrams = 256);
+  int port() const { return port_; }
+
+ private:
+  OscSocket() = default;
+  int fd_ = -1;
+  int port_ = 0;
 };
 
 struct LiveOptions {
@@ -80,10 +111,12 @@ class LiveReceiver {
   const StageState& poll(int waitMs = 0);
 
   const StageState& state() const { return input_.state(); }
+  DmxInput& input() { return input_; }
   std::vector<DmxSourceInfo> sources() const { return input_.sources(); }
   const DmxInputStats& stats() const { return input_.stats(); }
   double packetRate() const;  // good packets per second over the last second
   const UdpReceiver& udp() const { return *udp_; }
+  const DmxInput& input() const { return input_; }
   static double nowS();  // the steady clock, in seconds
 
  private:
@@ -91,6 +124,7 @@ class LiveReceiver {
       : input_(show, profiles, options) {}
   DmxInput input_;
   std::unique_ptr<UdpReceiver> udp_;
+  size_t syncJoined_ = 0;  // sync addresses already handed to joinSacnUniverse
 };
 
 }  // namespace haze

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "fixtures/cells.h"
 #include "shows/cue_number.h"
 #include "shows/edit/edit_commands.h"
 #include "shows/edit/edit_cue_number.h"
@@ -54,6 +55,12 @@ void compareField(const Attributes& before, const CueValues& p, Same same, Diffe
   check(&CueValues::iris, p.iris, p.iris && *p.iris == before.iris);
   check(&CueValues::color, p.color, p.color && *p.color == before.color);
   check(&CueValues::gobo, p.gobo, p.gobo && *p.gobo == before.gobo);
+  check(&CueValues::frost, p.frost, p.frost && *p.frost == before.frost);
+  check(&CueValues::prism, p.prism, p.prism && *p.prism == before.prism);
+  check(&CueValues::prismRotationDeg, p.prismRotationDeg, p.prismRotationDeg && *p.prismRotationDeg == before.prismRotationDeg);
+  check(&CueValues::blades, p.blades, p.blades && *p.blades == before.blades);
+  check(&CueValues::bladeRotationDeg, p.bladeRotationDeg, p.bladeRotationDeg && *p.bladeRotationDeg == before.bladeRotationDeg);
+  check(&CueValues::shutter, p.shutter, p.shutter && *p.shutter == before.shutter);
 }
 
 // Applies `fold` to one fixture: programmer values that differ from `before` are set in `cue`,
@@ -61,6 +68,15 @@ void compareField(const Attributes& before, const CueValues& p, Same same, Diffe
 void fold(const Attributes& before, const CueValues& p, CueValues& cue) {
   compareField(
       before, p, [&](auto member) { (cue.*member).reset(); }, [&](auto member) { cue.*member = p.*member; });
+  // Cells per cell and value (docs/cells.md), as the fixture's own values.
+  for (const auto& [k, pc] : p.cells) {
+    if (k < 0) continue;
+    const CellAttributes b = cellAttributes(before, static_cast<size_t>(k));
+    CellValues& c = cue.cells[k];
+    if (pc.intensity) c.intensity = *pc.intensity == b.intensity ? std::nullopt : pc.intensity;
+    if (pc.color) c.color = *pc.color == b.color ? std::nullopt : pc.color;
+    if (!c.intensity && !c.color) cue.cells.erase(k);
+  }
 }
 
 class RecordCue final : public EditCommand {

@@ -34,8 +34,13 @@ Entries entriesOf(const Programmer& p, const std::vector<int>& ids) {
 }
 
 bool finiteValues(const CueValues& v) {
-  for (const auto& f : {v.intensity, v.panDeg, v.tiltDeg, v.zoomDeg, v.goboRotationDeg, v.iris})
+  for (const auto& f : {v.intensity, v.panDeg, v.tiltDeg, v.zoomDeg, v.goboRotationDeg, v.iris, v.frost, v.prismRotationDeg,
+                        v.bladeRotationDeg})
     if (f && !std::isfinite(*f)) return false;
+  if (v.shutter && !(std::isfinite(v.shutter->rateHz) && std::isfinite(v.shutter->duty))) return false;
+  if (v.blades)
+    for (const glm::vec2& e : *v.blades)
+      if (!std::isfinite(e.x) || !std::isfinite(e.y)) return false;
   return !v.color || (std::isfinite(v.color->x) && std::isfinite(v.color->y) && std::isfinite(v.color->z));
 }
 
@@ -65,6 +70,16 @@ class SetProgrammer final : public EditCommand {
       if (v.iris) p.iris = v.iris;
       if (v.color) p.color = v.color;
       if (v.gobo) p.gobo = v.gobo;
+      if (v.frost) p.frost = v.frost;
+      if (v.prism) p.prism = v.prism;
+      if (v.prismRotationDeg) p.prismRotationDeg = v.prismRotationDeg;
+      if (v.blades) p.blades = v.blades;
+      if (v.bladeRotationDeg) p.bladeRotationDeg = v.bladeRotationDeg;
+      if (v.shutter) p.shutter = v.shutter;
+      for (const auto& [k, c] : v.cells) {
+        if (c.intensity) p.cells[k].intensity = c.intensity;
+        if (c.color) p.cells[k].color = c.color;
+      }
     }
     after_ = entriesOf(t.programmer, ids);
     return Ok{};

@@ -44,6 +44,8 @@ check valid "$repo/tests/data/shows/valid.haze.json"
 check valid "$repo/tests/data/shows/broken/overlap.haze.json"  # only haze validate sees overlaps
 check invalid "$repo/tests/data/shows/broken/newer-version.haze.json"
 check invalid "$repo/tests/data/shows/broken/bad-cues.haze.json"
+check valid "$repo/tests/data/shows/optics.haze.json"
+check invalid "$repo/tests/data/shows/broken/bad-optics.haze.json"  # a 500 Hz strobe, three blades
 
 echo "show_schema: $passed passed, $fail failed"
 [ $fail -eq 0 ]

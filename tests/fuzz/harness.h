@@ -30,6 +30,9 @@ bool acceptGdtfXml(const uint8_t* data, size_t size);  // description.xml alone,
 bool acceptMvr(const uint8_t* data, size_t size);
 bool acceptArtNet(const uint8_t* data, size_t size);
 bool acceptSacn(const uint8_t* data, size_t size);
+bool acceptSacnExtended(const uint8_t* data, size_t size);
+bool acceptArtTimeCode(const uint8_t* data, size_t size);
+bool acceptOsc(const uint8_t* data, size_t size);
 
 }  // namespace haze::fuzz
 

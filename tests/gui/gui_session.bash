@@ -10,14 +10,15 @@ pass=0; fail=0
 check() { if eval "$2"; then pass=$((pass + 1)); echo "ok: $1"; else fail=$((fail + 1)); echo "FAIL: $1"; fi; }
 finish() { echo "$pass passed, $fail failed"; [ $fail -eq 0 ]; }
 
-# start_haze NAME-IN-TITLE ARGS...: runs haze, waits for its window, gives it the input focus.
+# start_haze NAME-IN-TITLE ARGS...: runs haze, waits for its window to be mapped (focusing a
+# window not yet mapped is an X error, BadMatch), gives it the input focus.
 start_haze() {
   local name=$1; shift
   "$haze" open "$@" >"$tmp/haze.out" 2>&1 &
   pid=$!
   win=""
   for _ in $(seq 150); do
-    win=$(xdotool search --name "$name" 2>/dev/null | head -1)
+    win=$(xdotool search --onlyvisible --name "$name" 2>/dev/null | head -1)
     [ -n "$win" ] && break
     kill -0 $pid 2>/dev/null || break
     sleep 0.2

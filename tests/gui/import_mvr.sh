@@ -6,7 +6,7 @@
 set -uo pipefail
 haze=$1; root=$2
 . "$root/tests/gui/xvfb.bash"
-start_xvfb 92
+start_xvfb
 tmp=$(mktemp -d)
 export XDG_CONFIG_HOME="$tmp/config"
 trap 'kill $pid 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT

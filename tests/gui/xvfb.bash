@@ -1,21 +1,26 @@
-# Sourced by GUI tests: start_xvfb N starts Xvfb on display :N and stops it on exit. Each GUI
-# test has a display number of its own (input_events 91, import_mvr 92, screenshot_smoke 93,
-# walkthrough 94), so tests that run in parallel never share a display or drive each other's
-# windows.
+# Sourced by GUI tests: start_xvfb starts an Xvfb of the test's own and stops it on exit.
+# Xvfb picks a free display itself (-displayfd writes its number once it listens), so any number
+# of GUI tests, or twenty copies of one, run side by side without sharing a display or driving
+# each other's windows.
 # -noreset: an X server resets itself whenever its last client disconnects, and refuses
 # connections while it does. The tests' xdotool calls are short-lived clients, so without it a
 # haze starting while an xdotool call closed failed with "X11: Failed to open display" (the GUI
 # tests' intermittent failure: it came from the server's reset, not from haze).
 start_xvfb() {
-  local n=$1
   command -v Xvfb >/dev/null || { echo "FAIL: Xvfb is not installed (make deps installs xvfb)"; exit 1; }
-  if [ -e "/tmp/.X$n-lock" ] && kill -0 "$(tr -dc '0-9' < "/tmp/.X$n-lock")" 2>/dev/null; then
-    echo "FAIL: display :$n is taken by a running X server (pid $(tr -dc '0-9' < "/tmp/.X$n-lock")); stop it to run this test"
-    exit 1
-  fi
-  Xvfb ":$n" -screen 0 1280x800x24 -nolisten tcp -noreset >/dev/null 2>&1 &
+  local dfile n=""
+  dfile=$(mktemp)
+  Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp -noreset 3>"$dfile" >/dev/null 2>&1 &
   XVFB_PID=$!
   trap 'kill $XVFB_PID 2>/dev/null' EXIT
+  for _ in $(seq 200); do
+    read -r n < "$dfile" && [ -n "$n" ] && break   # a whole line: the server is listening
+    n=""
+    kill -0 $XVFB_PID 2>/dev/null || break
+    sleep 0.05
+  done
+  rm -f "$dfile"
+  [ -n "$n" ] || { echo "FAIL: could not start Xvfb"; exit 1; }
   export DISPLAY=":$n"
   # Ready when a client can connect (xdotool asks the server for the screen size).
   for _ in $(seq 100); do
@@ -23,6 +28,6 @@ start_xvfb() {
     kill -0 $XVFB_PID 2>/dev/null || break
     sleep 0.1
   done
-  echo "FAIL: could not start Xvfb on :$n"
+  echo "FAIL: Xvfb on :$n does not answer"
   exit 1
 }

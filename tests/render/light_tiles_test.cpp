@@ -24,7 +24,7 @@ ImageRGB renderSurfaces(const Venue& venue, const FrameState& frame, bool tiled)
 }
 
 void expectSameSurfaces(int fixtures) {
-  const Venue venue = benchVenue();
+  const Venue venue = benchVenue(fixtures);
   FrameState frame = benchFrame(fixtures);
   frame.medium.scattering = 0.0f;  // surfaces only: the planes pass is not what is tested
   const ImageRGB all = renderSurfaces(venue, frame, false);

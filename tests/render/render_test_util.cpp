@@ -36,6 +36,24 @@ BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldD
   b.optics.color = color;
   b.optics.dimmer = 1.0f;
   b.poseKey = 1;
+  // Distinct per beam: the renderer shares a light map between beams of equal optics keys.
+  static uint64_t nextOpticsKey = 1;
+  b.opticsKey = nextOpticsKey++;
+  return b;
+}
+
+BeamState fileBeam(const std::string& relativePath, glm::vec3 lensPos, glm::vec3 dir) {
+  BeamState b;
+  b.pose = beamAlong(lensPos, dir);
+  const std::filesystem::path file = std::filesystem::path(HAZE_SHARED_DATA) / "photometry" / relativePath;
+  auto dist = file.extension() == ".ldt" ? loadLdt(file) : loadIes(file);
+  EXPECT_TRUE(dist.ok()) << (dist.ok() ? "" : dist.error().str());
+  if (!dist.ok()) return b;
+  if (dist->luminousRadiusM > 0.0f) b.optics.lensRadiusM = dist->luminousRadiusM;
+  b.optics.distribution = std::make_shared<Distribution>(std::move(*dist));
+  b.optics.color = glm::vec3(1.0f);
+  b.optics.dimmer = 1.0f;
+  b.poseKey = 1;
   b.opticsKey = 1;
   return b;
 }

@@ -44,6 +44,9 @@ void addSphere(Venue& v, glm::vec3 centre, float radiusM, int segments = 32, int
 // A beam of a parametric distribution (beam/field angles, peak cd) at pos, aimed along dir.
 BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldDeg, float peakCd,
                    glm::vec3 color = glm::vec3(1.0f));
+// A beam of a photometric file (.ies or .ldt) under HAZE_SHARED_DATA/photometry, unzoomed, its
+// lens the file's luminous opening (or the default when the file gives none).
+BeamState fileBeam(const std::string& relativePath, glm::vec3 lensPos, glm::vec3 dir);
 
 // Writes <name>.actual.pfm, <name>.expected.pfm and <name>.diff.pfm into HAZE_TEST_OUTPUT_DIR
 // (the build tree's test-output/, never the source tree) and returns the files written.

@@ -209,7 +209,7 @@ put('artnet', 'bad-odd-length.bin', artdmx([1, 2, 3]))
 put('artnet', 'bad-id.bin', b'Art-Nat\0' + artdmx([0, 0])[8:])
 
 # ---- sACN ----
-def sacn(slots, universe=1, priority=100, options=0):
+def sacn(slots, universe=1, priority=100, options=0, start=0):
     size = 126 + len(slots)
     p = bytearray(size)
     def put16(at, v):
@@ -223,10 +223,69 @@ def sacn(slots, universe=1, priority=100, options=0):
     p[44:44 + len(name)] = name
     p[108] = priority; put16(109, 0); p[111] = 7; p[112] = options; put16(113, universe)
     put16(115, 0x7000 | (size - 115)); p[117] = 0x02; p[118] = 0xA1; put16(119, 0); put16(121, 1)
-    put16(123, len(slots) + 1); p[125] = 0
+    put16(123, len(slots) + 1); p[125] = start
     p[126:] = bytes(slots)
     return bytes(p)
 put('sacn', 'ok-full-universe.bin', sacn([i % 256 for i in range(512)]))
 put('sacn', 'ok-short-preview.bin', sacn([10, 20, 30], universe=7, options=0x80))
 put('sacn', 'bad-priority.bin', sacn([0] * 8, priority=201))
 put('sacn', 'bad-truncated.bin', sacn([0] * 8)[:100])
+put('sacn', 'ok-per-slot-priority.bin', sacn([200, 0, 100, 50], start=0xDD))
+put('sacn', 'bad-per-slot-priority.bin', sacn([200, 201], start=0xDD))
+
+# ---- sACN extended: synchronization and universe discovery ----
+def extended(body_len, vector):
+    size = 38 + body_len
+    p = bytearray(size)
+    def put16(at, v):
+        p[at] = (v >> 8) & 0xff; p[at + 1] = v & 0xff
+    put16(0, 0x0010); put16(2, 0)
+    p[4:16] = b'ASC-E1.17\0\0\0'
+    put16(16, 0x7000 | (size - 16)); p[21] = 0x08
+    p[22:38] = b'\x22' * 16
+    put16(38, 0x7000 | (size - 38)); p[43] = vector
+    return p, put16
+def sacn_sync(address, seq=3):
+    p, put16 = extended(11, 0x01)
+    p[44] = seq; put16(45, address)
+    return bytes(p)
+def sacn_discovery(universes, page=0, last=0):
+    p, put16 = extended(82 + 2 * len(universes), 0x02)
+    name = b'seed console'
+    p[44:44 + len(name)] = name
+    put16(112, 0x7000 | (len(p) - 112)); p[117] = 0x01; p[118] = page; p[119] = last
+    for i, u in enumerate(universes):
+        put16(120 + 2 * i, u)
+    return bytes(p)
+put('sacn_extended', 'ok-sync.bin', sacn_sync(7000))
+put('sacn_extended', 'ok-discovery.bin', sacn_discovery(list(range(1, 40)) + [63999], page=1, last=2))
+put('sacn_extended', 'bad-sync-address.bin', sacn_sync(0))
+put('sacn_extended', 'bad-discovery-page.bin', sacn_discovery([1], page=3, last=2))
+put('sacn_extended', 'bad-data-packet.bin', sacn([1, 2, 3]))
+
+# ---- ArtTimeCode ----
+def art_timecode(h, m, s, f, kind=1):
+    return b'Art-Net\0' + bytes([0x00, 0x97, 0, 14, 0, 0, f, s, m, h, kind])
+put('artnet_timecode', 'ok-ebu.bin', art_timecode(1, 2, 3, 24))
+put('artnet_timecode', 'ok-smpte.bin', art_timecode(23, 59, 59, 29, kind=3))
+put('artnet_timecode', 'bad-24-hours.bin', art_timecode(24, 0, 0, 0))
+put('artnet_timecode', 'bad-type.bin', art_timecode(0, 0, 0, 0, kind=9))
+put('artnet_timecode', 'bad-short.bin', art_timecode(0, 0, 0, 0)[:15])
+
+# ---- OSC remote control ----
+def osc_str(s):
+    b = s.encode() + b'\0'
+    return b + b'\0' * (-len(b) % 4)
+def osc(address, *args):
+    tags = ',' + ''.join('f' if isinstance(a, float) else 'i' if isinstance(a, int) else 's' for a in args)
+    out = osc_str(address) + osc_str(tags)
+    for a in args:
+        out += struct.pack('>f', a) if isinstance(a, float) else struct.pack('>i', a) if isinstance(a, int) else osc_str(a)
+    return out
+put('osc', 'ok-go.bin', osc('/haze/go'))
+put('osc', 'ok-cue.bin', osc('/haze/cue', '1.5'))
+put('osc', 'ok-color.bin', osc('/haze/fixture/3/color', 1.0, 0.5, 0.0))
+put('osc', 'ok-gobo.bin', osc('/haze/fixture/1/gobo', 'Stars'))
+put('osc', 'bad-intensity-range.bin', osc('/haze/fixture/1/intensity', 2.0))
+put('osc', 'bad-truncated.bin', osc('/haze/fixture/1/pan', 10.0)[:-2])
+put('osc', 'bad-bundle.bin', b'#bundle\0' + b'\0' * 7 + b'\1' + struct.pack('>i', 12) + osc('/haze/go'))

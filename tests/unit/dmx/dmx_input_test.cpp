@@ -116,7 +116,7 @@ TEST(DmxInput, CountsEveryKindOfDrop) {
   other.universe = 3;  // nobody is patched there
   input.receive(DmxProtocol::Sacn, test::sacn(other), kLocalhost, 1, 0.0);
   test::SacnFields alt;
-  alt.startCode = 0xDD;
+  alt.startCode = 0x17;  // text: valid, not for haze
   input.receive(DmxProtocol::Sacn, test::sacn(alt), kLocalhost, 1, 0.0);
   test::SacnFields seq;
   seq.sequence = 10;

@@ -66,7 +66,12 @@ TEST(Fuzz, MutatedSacnPacketsAreAcceptedOnlyWhenStillConsistent) {
       EXPECT_LE(p.packet.priority, 200);
       EXPECT_GE(p.packet.universe, 1);
       EXPECT_LE(p.packet.universe, 63999);
-      EXPECT_EQ(p.packet.startCode, 0);
+      EXPECT_TRUE(p.packet.startCode == 0 || p.packet.startCode == 0xDD);
+      if (p.packet.startCode == 0xDD) {
+        for (int k = 0; k < p.packet.slotCount; ++k) {
+          EXPECT_LE(p.packet.slots[static_cast<size_t>(k)], 200);
+        }
+      }
     } else {
       ++rejected;
       EXPECT_GE(p.byte, 0);
@@ -104,11 +109,15 @@ TEST(Fuzz, DmxInputCountsEveryDatagramAndStaysBounded) {
   const test::TestShow t = test::makeTestShow();
   DmxInput input(t.show, t.profiles);
   std::mt19937 rng(2024);
-  std::uniform_int_distribution<int> pick(0, 3);
+  std::uniform_int_distribution<int> pick(0, 6);
   std::uniform_int_distribution<uint32_t> ip(0, 0xFFFFFFFF);
   test::SacnFields f;
   const auto sacnGood = test::sacn(f);
   const auto artGood = test::artDmx({});
+  f.syncAddress = 9;
+  const auto sacnSynced = test::sacn(f);
+  const auto sync = test::sacnSync(9);
+  const auto discovery = test::sacnDiscovery({1, 2, 3});
   double now = 0.0;
   const int total = 40000;
   for (int i = 0; i < total; ++i) {
@@ -120,6 +129,9 @@ TEST(Fuzz, DmxInputCountsEveryDatagramAndStaysBounded) {
       case 1: b = mutate(sacnGood, rng); break;
       case 2: b = mutate(artGood, rng); protocol = DmxProtocol::ArtNet; break;
       case 3: b = randomBytes(rng, 700); protocol = DmxProtocol::ArtNet; break;
+      case 4: b = mutate(sacnSynced, rng); break;
+      case 5: b = mutate(i % 2 ? sync : discovery, rng); break;
+      case 6: b = i % 3 ? test::artSync() : mutate(artGood, rng); protocol = DmxProtocol::ArtNet; break;
     }
     // Random senders: Art-Net sources are keyed by address, so this also floods the merger.
     input.receive(protocol, b, ip(rng), 6454, now);
@@ -127,8 +139,13 @@ TEST(Fuzz, DmxInputCountsEveryDatagramAndStaysBounded) {
   }
   const DmxInputStats& s = input.stats();
   EXPECT_EQ(s.received, static_cast<uint64_t>(total));
-  EXPECT_EQ(s.good + s.ignored + s.late + s.terminated + s.unwatched + s.exceeded + s.malformedTotal(),
+  // Every datagram ends in exactly one count (or is still held for its sync packet).
+  EXPECT_EQ(s.good + s.ignored + s.late + s.terminated + s.unwatched + s.exceeded + s.malformedTotal() +
+                s.syncPackets + s.discoveryPackets + s.superseded + input.syncGate().heldCount(),
             s.received);
+  EXPECT_GT(s.syncPackets, 1000u);
+  EXPECT_GT(s.held, 100u);
+  EXPECT_LE(input.discovered().size(), kMaxDiscoveredSources);
   EXPECT_GT(s.malformedTotal(), 10000u);
   // The merger never holds more sources than its per-universe limit allows.
   EXPECT_LE(input.sources().size(), static_cast<size_t>(8 * 2));

@@ -209,5 +209,59 @@ TEST(Merge, GenerationMovesWhenLevelsMayChange) {
   EXPECT_GT(m.generation(), g1);
 }
 
+// Per-slot priority (sACN START code 0xDD): each slot goes to its own top priority, HTP among
+// equals; per-slot 0 leaves the slot to the others; a source without 0xDD competes at its
+// universe priority on every slot. Expected values worked slot by slot below.
+TEST(Merge, PerSlotPriorityMergesChannelByChannel) {
+  DmxMerger m;
+  Sender main{cid(1), 100, {10, 20, 30, 40}};
+  Sender backup{cid(2), 100, {99, 99, 99, 99}};
+  EXPECT_EQ(m.submit(main.frame(), 0.0), MergeVerdict::Accepted);
+  EXPECT_EQ(m.submit(backup.frame(), 0.0), MergeVerdict::Accepted);
+  // Both at 100 everywhere: HTP, backup's 99s win.
+  EXPECT_EQ((*m.universe(1))[0], 99);
+  // Backup sends per-slot priorities: slot 1 at 150 (wins), slot 2 at 100 (ties: HTP), slot 3
+  // at 50 (loses to main's 100), slot 4 at 0 (not driven by backup).
+  Sender backupPap{cid(2), 100, {150, 100, 50, 0}};
+  backupPap.sequence = backup.sequence;
+  DmxFrame pap = backupPap.frame();
+  pap.perSlotPriority = true;
+  EXPECT_EQ(m.submit(pap, 0.1), MergeVerdict::Accepted);
+  const DmxBuffer& u = *m.universe(1);
+  EXPECT_EQ(u[0], 99);  // backup alone at 150
+  EXPECT_EQ(u[1], 99);  // 100 vs 100: max(20, 99)
+  EXPECT_EQ(u[2], 30);  // main's 100 beats 50
+  EXPECT_EQ(u[3], 40);  // backup does not drive slot 4
+  EXPECT_EQ(u[4], 0);   // slots beyond both: main drives them at 100 with 0
+  // Both are winning somewhere.
+  for (const DmxSourceInfo& s : m.sources()) EXPECT_TRUE(s.winning) << s.id.str();
+  // Per-slot priorities from backup that stop arriving fall back to its universe priority after
+  // the loss timeout, while its levels keep coming.
+  backup.sequence = backupPap.sequence;
+  backup.slots = {1, 1, 1, 1};
+  EXPECT_EQ(m.submit(backup.frame(), 2.0), MergeVerdict::Accepted);
+  EXPECT_EQ((*m.universe(1))[0], 1);  // still 150 on slot 1
+  EXPECT_EQ((*m.universe(1))[3], 40);
+  main.slots = {10, 20, 30, 40};
+  EXPECT_EQ(m.submit(main.frame(), 2.7), MergeVerdict::Accepted);
+  EXPECT_EQ(m.submit(backup.frame(), 2.7), MergeVerdict::Accepted);
+  m.expire(2.7);  // 0xDD last at 0.1: older than 2.5 s
+  EXPECT_EQ((*m.universe(1))[0], 10);  // both at 100 again: HTP
+  EXPECT_EQ((*m.universe(1))[3], 40);
+}
+
+// A source that has sent only priorities has no levels yet: it does not make its slots 0.
+TEST(Merge, PrioritiesWithoutLevelsTakeNoPart) {
+  DmxMerger m;
+  Sender a{cid(1), 100, {0xDD}};
+  DmxFrame pap = a.frame();
+  pap.perSlotPriority = true;
+  EXPECT_EQ(m.submit(pap, 0.0), MergeVerdict::Accepted);
+  EXPECT_EQ(m.universe(1), nullptr);
+  Sender b{cid(2), 100, {7}};
+  EXPECT_EQ(m.submit(b.frame(), 0.0), MergeVerdict::Accepted);
+  EXPECT_EQ((*m.universe(1))[0], 7);
+}
+
 }  // namespace
 }  // namespace haze

@@ -81,4 +81,48 @@ inline std::vector<uint8_t> sacn(const SacnFields& f) {
   return p;
 }
 
+// The E1.31 root layer (table 4-2/4-3 share it with data packets), vector EXTENDED (8).
+inline void extendedRoot(std::vector<uint8_t>& p, uint8_t cidFill) {
+  put16(p, 0, 0x0010);
+  put16(p, 2, 0x0000);
+  const char id[12] = {'A', 'S', 'C', '-', 'E', '1', '.', '1', '7', 0, 0, 0};
+  for (int i = 0; i < 12; ++i) p[4 + static_cast<size_t>(i)] = static_cast<uint8_t>(id[i]);
+  put16(p, 16, 0x7000 | static_cast<unsigned>(p.size() - 16));
+  p[21] = 0x08;  // VECTOR_ROOT_E131_EXTENDED
+  for (size_t i = 22; i < 38; ++i) p[i] = cidFill;
+  put16(p, 38, 0x7000 | static_cast<unsigned>(p.size() - 38));
+}
+
+// E1.31 table 4-2: Synchronization Packet, 49 bytes.
+inline std::vector<uint8_t> sacnSync(uint16_t syncAddress, uint8_t sequence = 0, uint8_t cidFill = 0x11) {
+  std::vector<uint8_t> p(49, 0);
+  extendedRoot(p, cidFill);
+  p[43] = 0x01;  // VECTOR_E131_EXTENDED_SYNCHRONIZATION
+  p[44] = sequence;
+  put16(p, 45, syncAddress);
+  return p;
+}
+
+// E1.31 table 4-3: Universe Discovery Packet, one page.
+inline std::vector<uint8_t> sacnDiscovery(const std::vector<uint16_t>& universes, uint8_t page = 0,
+                                          uint8_t lastPage = 0, const std::string& name = "test console",
+                                          uint8_t cidFill = 0x11) {
+  std::vector<uint8_t> p(120 + 2 * universes.size(), 0);
+  extendedRoot(p, cidFill);
+  p[43] = 0x02;  // VECTOR_E131_EXTENDED_DISCOVERY
+  for (size_t i = 0; i < name.size() && i < 63; ++i) p[44 + i] = static_cast<uint8_t>(name[i]);
+  put16(p, 112, 0x7000 | static_cast<unsigned>(p.size() - 112));
+  p[117] = 0x01;  // VECTOR_UNIVERSE_DISCOVERY_UNIVERSE_LIST
+  p[118] = page;
+  p[119] = lastPage;
+  for (size_t i = 0; i < universes.size(); ++i) put16(p, 120 + 2 * i, universes[i]);
+  return p;
+}
+
+// Art-Net 4 ArtSync: ID, OpSync 0x5200 (low byte first), ProtVer 14, Aux1, Aux2.
+inline std::vector<uint8_t> artSync() {
+  std::vector<uint8_t> p = {'A', 'r', 't', '-', 'N', 'e', 't', 0, 0x00, 0x52, 0, 14, 0, 0};
+  return p;
+}
+
 }  // namespace haze::test

@@ -136,12 +136,75 @@ TEST(Sacn, PropertyCountAbove513IsRejected) {
 }
 
 TEST(Sacn, ExtendedPacketsAndAlternateStartCodesAreIgnored) {
-  auto sync = test::sacn({});
-  sync[21] = 0x08;  // VECTOR_ROOT_E131_EXTENDED
-  EXPECT_EQ(parseSacn(sync).status, SacnStatus::Ignored);
+  EXPECT_EQ(parseSacn(test::sacnSync(7)).status, SacnStatus::Ignored);
   test::SacnFields f;
-  f.startCode = 0xDD;  // per-slot priority
+  f.startCode = 0x17;  // ASCII text
   EXPECT_EQ(parseSacn(test::sacn(f)).status, SacnStatus::Ignored);
+  // A data packet is not an extended one.
+  EXPECT_EQ(parseSacnExtended(test::sacn({})).status, SacnStatus::NotExtended);
+}
+
+TEST(Sacn, PerSlotPriorityPacketsAreReadAndChecked) {
+  test::SacnFields f;
+  f.startCode = 0xDD;
+  f.slots.assign(4, 0);
+  f.slots = {200, 0, 50, 100};
+  const SacnParse p = parseSacn(test::sacn(f));
+  ASSERT_TRUE(p.ok());
+  EXPECT_EQ(p.packet.startCode, kSacnStartPerSlotPriority);
+  EXPECT_EQ(p.packet.slotCount, 4);
+  EXPECT_EQ(p.packet.slots[2], 50);
+  f.slots[3] = 201;  // per-slot priorities stop at 200 too
+  const SacnParse bad = parseSacn(test::sacn(f));
+  EXPECT_EQ(bad.status, SacnStatus::BadPriority);
+  EXPECT_EQ(bad.byte, 126 + 3);
+}
+
+TEST(Sacn, SynchronizationPacketFields) {
+  const SacnExtendedParse p = parseSacnExtended(test::sacnSync(7001, 42, 0x5A));
+  ASSERT_TRUE(p.ok()) << sacnError(p.status, p.byte).str();
+  EXPECT_TRUE(p.isSync);
+  EXPECT_EQ(p.sync.syncAddress, 7001);
+  EXPECT_EQ(p.sync.sequence, 42);
+  EXPECT_EQ(p.sync.cid[15], 0x5A);
+  EXPECT_EQ(parseSacnExtended(test::sacnSync(0)).status, SacnStatus::BadSyncAddress);
+  EXPECT_EQ(parseSacnExtended(test::sacnSync(64000)).status, SacnStatus::BadSyncAddress);
+  auto longer = test::sacnSync(1);
+  longer.push_back(0);  // root length follows the datagram, framing does not
+  EXPECT_EQ(parseSacnExtended(longer).status, SacnStatus::BadRootLength);
+  test::put16(longer, 16, 0x7000 | 34);
+  test::put16(longer, 38, 0x7000 | 12);  // nested, but a sync packet is 11 bytes of framing
+  EXPECT_EQ(parseSacnExtended(longer).status, SacnStatus::BadExtendedLength);
+  auto vector = test::sacnSync(1);
+  vector[43] = 0x03;
+  EXPECT_EQ(parseSacnExtended(vector).status, SacnStatus::BadExtendedVector);
+  auto cut = test::sacnSync(1);
+  cut.resize(45);
+  EXPECT_EQ(parseSacnExtended(cut).status, SacnStatus::BadRootLength);
+}
+
+TEST(Sacn, UniverseDiscoveryPacketFields) {
+  const SacnExtendedParse p = parseSacnExtended(test::sacnDiscovery({1, 2, 300}, 1, 2, "desk"));
+  ASSERT_TRUE(p.ok()) << sacnError(p.status, p.byte).str();
+  EXPECT_FALSE(p.isSync);
+  EXPECT_EQ(p.discovery.sourceName, "desk");
+  EXPECT_EQ(p.discovery.page, 1);
+  EXPECT_EQ(p.discovery.lastPage, 2);
+  EXPECT_EQ(p.discovery.universes, (std::vector<uint16_t>{1, 2, 300}));
+  EXPECT_TRUE(parseSacnExtended(test::sacnDiscovery({})).ok());  // a source with no universes
+  EXPECT_EQ(parseSacnExtended(test::sacnDiscovery({1}, 3, 2)).status, SacnStatus::BadDiscoveryPage);
+  EXPECT_EQ(parseSacnExtended(test::sacnDiscovery({1, 0})).status, SacnStatus::BadDiscoveryUniverse);
+  EXPECT_EQ(parseSacnExtended(test::sacnDiscovery(std::vector<uint16_t>(513, 5))).status,
+            SacnStatus::BadDiscoveryUniverse);
+  auto odd = test::sacnDiscovery({1, 2});
+  odd.push_back(0);  // half a universe: every layer length nested, but not a whole list
+  test::put16(odd, 16, 0x7000 | static_cast<unsigned>(odd.size() - 16));
+  test::put16(odd, 38, 0x7000 | static_cast<unsigned>(odd.size() - 38));
+  test::put16(odd, 112, 0x7000 | static_cast<unsigned>(odd.size() - 112));
+  EXPECT_EQ(parseSacnExtended(odd).status, SacnStatus::BadDiscoveryLength);
+  auto vector = test::sacnDiscovery({1});
+  vector[117] = 0x02;
+  EXPECT_EQ(parseSacnExtended(vector).status, SacnStatus::BadDiscoveryVector);
 }
 
 TEST(Sacn, SourceNameWithoutTerminatorIsCut) {

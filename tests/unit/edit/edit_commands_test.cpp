@@ -3,6 +3,7 @@
 // save writes, plus the programmer).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <sstream>
 
@@ -249,6 +250,29 @@ TEST(EditCues, RecordStoresOnlyWhatDiffersFromTheTrackedStateBefore) {
   StageState wanted = withProgrammer(trackedState(b.show, b.profiles, b.main(), 1), b.programmer);
   EXPECT_EQ(played, wanted);
   EXPECT_EQ(b.history.undoLabel(), "Record cue 3");
+}
+
+TEST(EditCues, RecordCarriesTheShutterAndBladesOfTheProgrammer) {
+  Bench b;
+  CueValues v;
+  v.shutter = Shutter{ShutterMode::Strobe, 12.0f, 0.4f};
+  v.blades = BladeInsertions{};
+  (*v.blades)[2] = {0.3f, 0.1f};
+  v.frost = 0.0f;  // what fixture 1 has already: not recorded
+  ASSERT_TRUE(b.run(setProgrammer({{1, v}})).ok());
+  expectRoundTrip(b, recordCue({"Main", "2", "", "Strobe"}));
+  const Cue& c = b.main().cues[2];
+  ASSERT_EQ(c.values.size(), 1u);
+  CueValues want;
+  want.shutter = v.shutter;
+  want.blades = v.blades;
+  EXPECT_EQ(c.values.at(1), want);
+  StageState played = trackedState(b.show, b.profiles, b.main(), 2);
+  EXPECT_EQ(played.at(1).shutter, *v.shutter);
+  EXPECT_FLOAT_EQ(played.at(1).blades[2].x, 0.3f);
+  CueValues bad;
+  bad.shutter = Shutter{ShutterMode::Strobe, NAN, 0.5f};
+  expectRefused(b, setProgrammer({{1, bad}}), "finite");
 }
 
 TEST(EditCues, RecordNumbersBetweenNeighboursAndAtTheStart) {

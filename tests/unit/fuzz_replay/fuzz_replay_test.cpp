@@ -135,6 +135,9 @@ TEST(FuzzReplay, GdtfXml) { replay("gdtf_xml", fuzz::acceptGdtfXml, 1500, 10); }
 TEST(FuzzReplay, Mvr) { replay("mvr", fuzz::acceptMvr, 300, 7); }
 TEST(FuzzReplay, ArtNet) { replay("artnet", fuzz::acceptArtNet, 5000, 8); }
 TEST(FuzzReplay, Sacn) { replay("sacn", fuzz::acceptSacn, 5000, 9); }
+TEST(FuzzReplay, SacnExtended) { replay("sacn_extended", fuzz::acceptSacnExtended, 5000, 11); }
+TEST(FuzzReplay, ArtTimeCode) { replay("artnet_timecode", fuzz::acceptArtTimeCode, 3000, 12); }
+TEST(FuzzReplay, Osc) { replay("osc", fuzz::acceptOsc, 5000, 13); }
 
 }  // namespace
 }  // namespace haze

@@ -79,5 +79,34 @@ TEST(ImageCompare, DifferentSizesFail) {
   EXPECT_NE(c.error().message.find("3x4"), std::string::npos) << c.error().message;
 }
 
+// compareBeams on L_in: one lamp pixel sets the core (above 1 % of the largest value), the 99.9th
+// percentile (1.0: the lamp is under 0.1 % of the values) sets the wider mask and the dark.
+TEST(CompareBeams, CoreWideAndLeakByHand) {
+  ImageRGB ref = filled(200, 10, glm::vec3(0.0f));
+  ImageRGB act = ref;
+  ref.pixels[0] = glm::vec3(1000.0f);
+  act.pixels[0] = glm::vec3(1100.0f);  // 10 % off
+  for (size_t i = 1; i < 1000; ++i) {
+    ref.pixels[i] = glm::vec3(1.0f);
+    act.pixels[i] = glm::vec3(i < 50 ? 1.2f : 1.0f);  // 49 pixels 20 % off
+  }
+  for (size_t i = 1000; i < 2000; ++i) act.pixels[i] = glm::vec3(i < 1010 ? 0.5f : 0.005f);  // 10 leak
+  auto c = compareBeams(act, ref);
+  ASSERT_TRUE(c.ok()) << c.error().str();
+  EXPECT_EQ(c->coreValues, 3u);
+  EXPECT_NEAR(c->coreError, 0.1, 1e-6);
+  EXPECT_EQ(c->wideValues, 3000u);
+  EXPECT_NEAR(c->wideError, (3 * 0.1 + 49 * 3 * 0.2) / 3000.0, 1e-6);
+  EXPECT_EQ(c->darkValues, 3000u);
+  EXPECT_EQ(c->leakedValues, 30u);  // 0.005 is under 1 % of the percentile: not a leak
+  EXPECT_NEAR(c->leak(), 0.01, 1e-12);
+}
+
+TEST(CompareBeams, DarkReferenceOrOtherSizeIsAnError) {
+  const ImageRGB dark = filled(4, 4, glm::vec3(0.0f));
+  EXPECT_FALSE(compareBeams(dark, dark).ok());
+  EXPECT_FALSE(compareBeams(filled(4, 4, glm::vec3(1.0f)), filled(4, 3, glm::vec3(1.0f))).ok());
+}
+
 }  // namespace
 }  // namespace haze

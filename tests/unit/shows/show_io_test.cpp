@@ -101,6 +101,21 @@ TEST(ShowIo, WrittenTextReloadsToTheSameShowAndIsStable) {
   EXPECT_EQ(s.atmosphere.ambient, a->atmosphere.ambient);
 }
 
+// A cue's timecode is written only when set, so shows without timecodes keep their exact text.
+TEST(ShowIo, CueTimecodeRoundTripsAndIsWrittenOnlyWhenSet) {
+  auto a = loadShow(validShowPath());
+  ASSERT_TRUE(a.ok());
+  ASSERT_FALSE(a->cueLists.empty());
+  EXPECT_EQ(showToText(*a).find("timecode"), std::string::npos);
+  a->cueLists[0].cues[0].timecode = "01:02:03:04";
+  const std::string text = showToText(*a);
+  EXPECT_NE(text.find("\"timecode\": \"01:02:03:04\""), std::string::npos);
+  ShowParse b = parseShowText(text, validShowPath());
+  ASSERT_TRUE(b.problems.empty()) << b.problems[0].str();
+  EXPECT_EQ(b.show.cueLists[0].cues[0].timecode, "01:02:03:04");
+  EXPECT_EQ(b.show.cueLists[0].cues[1].timecode, "");
+}
+
 TEST(ShowIo, WrittenTextIsDiffable) {
   auto a = loadShow(validShowPath());
   ASSERT_TRUE(a.ok());

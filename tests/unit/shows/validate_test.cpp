@@ -80,6 +80,14 @@ const std::vector<Broken>& brokenShows() {
        "/cue_lists/0/cues/0/number", "expected a cue number"},
       {"cue number written as a JSON number", [](json& j) { set(j, "/cue_lists/0/cues/0/number", 1); },
        "/cue_lists/0/cues/0/number", "(a string), got a number"},
+      {"timecode beyond 24 h", [](json& j) { set(j, "/cue_lists/0/cues/0/timecode", "24:00:00:00"); },
+       "/cue_lists/0/cues/0/timecode", "within a day"},
+      {"timecode not hh:mm:ss:ff", [](json& j) { set(j, "/cue_lists/0/cues/0/timecode", "1:00"); },
+       "/cue_lists/0/cues/0/timecode", "expected a timecode \"hh:mm:ss:ff\""},
+      {"timecodes out of order", [](json& j) {
+         set(j, "/cue_lists/0/cues/0/timecode", "00:01:00:00");
+         set(j, "/cue_lists/0/cues/1/timecode", "00:00:30:00");
+       }, "/cue_lists/0/cues/1/timecode", "expected timecodes that increase down the list"},
       {"negative fade", [](json& j) { set(j, "/cue_lists/0/cues/1/fade", -1); }, "/cue_lists/0/cues/1/fade",
        "not negative, got -1"},
       {"negative delay", [](json& j) { set(j, "/cue_lists/0/cues/1/delay", -0.5); }, "/cue_lists/0/cues/1/delay",

@@ -1,0 +1,106 @@
+// The optics attributes of a cue (docs/show-format.md): read, written back byte-stable, refused
+// at their place when malformed, tracked and faded (frost, rotations and blades fade; prism and
+// shutter switch when the fade starts).
+#include <gtest/gtest.h>
+
+#include "show_test_data.h"
+#include "shows/playback.h"
+#include "shows/show_json.h"
+
+namespace haze {
+namespace {
+
+// The valid show with one cue whose values for fixture 101 are `values`.
+std::string withValues(const std::string& values) {
+  auto a = loadShow(test::validShowPath());
+  EXPECT_TRUE(a.ok());
+  a->cueLists = {CueList{"Main", {Cue{.number = "1", .label = "", .fadeS = 2.0, .delayS = 0.0, .followS = {}, .values = {}}}}};
+  std::string text = showToText(*a);
+  const std::string key = "\"values\": {}";
+  const size_t at = text.find(key);
+  EXPECT_NE(at, std::string::npos) << text;
+  text.replace(at, key.size(), "\"values\": {\"101\": " + values + "}");
+  return text;
+}
+
+TEST(OpticsValues, ReadAndWriteBack) {
+  ShowParse p = parseShowText(withValues(R"({"intensity": 1, "frost": 0.5, "prism": "3-facet", "prism_rotation": 30,
+      "blades": [[0.1, 0.2], [0, 0], [0.5, 0.25], [0, 1]], "blade_rotation": -10,
+      "shutter": {"strobe_hz": 12.5, "duty": 0.3, "mode": "random"}})"), test::validShowPath());
+  ASSERT_TRUE(p.problems.empty()) << p.problems[0].str();
+  const CueValues& v = p.show.cueLists[0].cues[0].values.at(101);
+  EXPECT_FLOAT_EQ(*v.frost, 0.5f);
+  EXPECT_EQ(*v.prism, "3-facet");
+  EXPECT_FLOAT_EQ(*v.prismRotationDeg, 30.0f);
+  EXPECT_FLOAT_EQ((*v.blades)[2].y, 0.25f);
+  EXPECT_FLOAT_EQ((*v.blades)[3].y, 1.0f);
+  EXPECT_FLOAT_EQ(*v.bladeRotationDeg, -10.0f);
+  EXPECT_EQ(*v.shutter, (Shutter{ShutterMode::Random, 12.5f, 0.3f}));
+  const std::string text = showToText(p.show);
+  ShowParse q = parseShowText(text, test::validShowPath());
+  ASSERT_TRUE(q.problems.empty()) << q.problems[0].str();
+  EXPECT_EQ(q.show.cueLists[0].cues[0].values.at(101), v);
+  EXPECT_EQ(showToText(q.show), text);
+  // "open" and "closed" as strings, a strobe without mode or duty as strobe at 0.5.
+  ShowParse s = parseShowText(withValues(R"({"shutter": {"strobe_hz": 10}})"), test::validShowPath());
+  ASSERT_TRUE(s.problems.empty());
+  EXPECT_EQ(*s.show.cueLists[0].cues[0].values.at(101).shutter, (Shutter{ShutterMode::Strobe, 10.0f, 0.5f}));
+  ShowParse c = parseShowText(withValues(R"({"shutter": "closed"})"), test::validShowPath());
+  ASSERT_TRUE(c.problems.empty());
+  EXPECT_EQ(c.show.cueLists[0].cues[0].values.at(101).shutter->mode, ShutterMode::Closed);
+  EXPECT_NE(showToText(c.show).find("\"shutter\": \"closed\""), std::string::npos);
+}
+
+TEST(OpticsValues, RefusedAtTheirPlace) {
+  const std::pair<const char*, const char*> bad[] = {
+      {R"({"frost": 1.5})", "/frost"},
+      {R"({"blades": [[0, 0], [0, 0], [0, 0]]})", "/blades"},
+      {R"({"blades": [[0, 0], [0, 2], [0, 0], [0, 0]]})", "/blades/1/1"},
+      {R"({"blades": [[0, 0], [0], [0, 0], [0, 0]]})", "/blades/1"},
+      {R"({"shutter": "strobe"})", "/shutter"},
+      {R"({"shutter": {"duty": 0.5}})", "/shutter/strobe_hz"},
+      {R"({"shutter": {"strobe_hz": 500}})", "/shutter/strobe_hz"},
+      {R"({"shutter": {"strobe_hz": 5, "duty": 0}})", "/shutter/duty"},
+      {R"({"shutter": {"strobe_hz": 5, "mode": "open"}})", "/shutter/mode"},
+      {R"({"shutter": {"strobe_hz": 5, "rate": 3}})", "/shutter/rate"},
+      {R"({"prism": ""})", "/prism"},
+  };
+  for (const auto& [values, where] : bad) {
+    ShowParse p = parseShowText(withValues(values), test::validShowPath());
+    ASSERT_FALSE(p.problems.empty()) << values;
+    EXPECT_EQ(p.problems[0].place, std::string("/cue_lists/0/cues/0/values/101") + where) << values << ": " << p.problems[0].str();
+  }
+}
+
+TEST(OpticsValues, FadeOrSwitchLikeTheOthers) {
+  Attributes from, to;
+  to.frost = 1.0f;
+  to.prism = "3-facet";
+  to.prismRotationDeg = 90.0f;
+  to.blades[1] = {0.5f, 1.0f};
+  to.bladeRotationDeg = 20.0f;
+  to.shutter = Shutter{ShutterMode::Strobe, 10.0f, 0.5f};
+  const Attributes half = blendAttributes(from, to, 0.5, std::nullopt);
+  EXPECT_FLOAT_EQ(half.frost, 0.5f);
+  EXPECT_FLOAT_EQ(half.prismRotationDeg, 45.0f);
+  EXPECT_FLOAT_EQ(half.blades[1].x, 0.25f);
+  EXPECT_FLOAT_EQ(half.blades[1].y, 0.5f);
+  EXPECT_FLOAT_EQ(half.bladeRotationDeg, 10.0f);
+  EXPECT_EQ(half.prism, "3-facet");  // switched when the fade started
+  EXPECT_EQ(half.shutter, to.shutter);
+  const Attributes before = blendAttributes(from, to, -1.0, std::nullopt);
+  EXPECT_EQ(before.prism, "Open");
+  EXPECT_EQ(before.shutter.mode, ShutterMode::Open);
+  // Tracking lays a cue's optics over the state.
+  Attributes a;
+  CueValues v;
+  v.shutter = Shutter{ShutterMode::Closed, 0.0f, 0.5f};
+  v.frost = 0.25f;
+  overlayValues(a, v);
+  EXPECT_EQ(a.shutter.mode, ShutterMode::Closed);
+  EXPECT_FLOAT_EQ(a.frost, 0.25f);
+  EXPECT_EQ(a.prism, "Open");
+}
+
+}  // namespace
+}  // namespace haze
