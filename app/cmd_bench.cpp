@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/bench_scene.h"
+#include "app/bench_show.h"
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/frame_builder.h"
@@ -131,18 +132,19 @@ int runStudy(int width, int height) {
 }  // namespace
 
 constexpr const char* kBenchUsage =
-    "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME]] [--width W --height H]\n"
-    "                  [--quality Q] [--frames K] [--planes N] [--scatter-divisor D] [--min-samples M]\n"
-    "                  [--compare-reference] [--json]\n"
+    "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells separate|merged]]\n"
+    "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
+    "                  [--min-samples M] [--compare-reference] [--json]\n"
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
     "first unless --cue, from the show's first camera unless --camera) per frame and per pass;\n"
+    "--cells merged draws a fixture's alike cells as one beam (docs/cells.md);\n"
     "--compare-reference also renders the CPU reference and gives the mean relative error; --study runs\n"
     "the virtual-plane accuracy study.\n";
 
 int runBench(const Args& args) {
   int fixtures = -1, width = 1280, height = 720, frames = 5;
-  std::string quality = "default", showPath, cue, camera;
+  std::string quality = "default", showPath, cue, camera, cells = "separate";
   bool json = false, compare = false, study = false;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
   CommandLine cli("haze bench", kBenchUsage);
@@ -159,7 +161,8 @@ int runBench(const Args& args) {
       .flag("--study", study)
       .integer("--planes", planes, 1, 4096, "1..4096")
       .integer("--scatter-divisor", divisor, 1, 8, "1..8")
-      .integer("--min-samples", minSamples, 0, 256, "0..256");
+      .integer("--min-samples", minSamples, 0, 256, "0..256")
+      .choice("--cells", cells, {"separate", "merged"});
   if (auto done = cli.parse(args)) return *done;
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
@@ -167,6 +170,7 @@ int runBench(const Args& args) {
     return fail("--quality reference is the CPU integrator: time it against a GPU preset with --compare-reference");
   if (!showPath.empty() && fixtures >= 0) return fail("--fixtures and --show exclude each other");
   if (showPath.empty() && (!cue.empty() || !camera.empty())) return fail("--cue and --camera need --show");
+  if (showPath.empty() && cells != "separate") return fail("--cells needs --show");
   auto ctx = createHeadlessContext();
   if (!ctx) return fail(ctx.error().str());
   if (study) return runStudy(width, height);
@@ -176,27 +180,8 @@ int runBench(const Args& args) {
     fixtures = fixtures < 0 ? 16 : fixtures;
     venue = benchVenue(fixtures);
     frame = benchFrame(fixtures);
-  } else {
-    auto show = loadShow(showPath);
-    if (!show) return fail(show.error().str());
-    auto profiles = loadProfiles(*show);
-    if (!profiles) return fail(profiles.error().str());
-    if (show->venueGltf.empty()) return fail(showPath + ": the show names no venue");
-    auto v = loadVenue(show->resolve(show->venueGltf));
-    if (!v) return fail(v.error().str());
-    venue = std::move(*v);
-    const CueList* list = show->findCueList("");
-    if (!list || list->cues.empty()) return fail(showPath + ": the show has no cues");
-    size_t index = 0;
-    if (!cue.empty()) {
-      auto found = findCue(*list, cue);
-      if (!found) return fail(found.error().str());
-      index = *found;
-    }
-    auto f = buildFrame(*show, *profiles, trackedState(*show, *profiles, *list, index), camera);
-    if (!f) return fail(f.error().str());
-    frame = std::move(*f);
-    fixtures = static_cast<int>(show->fixtures.size());
+  } else if (Status s = loadBenchShow(showPath, cue, camera, cells == "merged", venue, frame, fixtures); !s) {
+    return fail(s.error().str());
   }
   RenderSettings settings = renderSettingsFor(*q, width, height);
   settings.timePasses = true;

@@ -22,6 +22,18 @@ void printText(const nlohmann::ordered_json& f) {
             << "  symmetry " << f["symmetry"].get<std::string>() << ", grid " << f["grid"]["gamma"].get<int>() << " gamma x "
             << f["grid"]["c"].get<int>() << " C\n"
             << "  lens radius " << num("lens_radius") << " m (" << f["lens_radius_source"].get<std::string>() << ")\n";
+  for (const char* axis : {"pan", "tilt", "zoom"}) {
+    const auto& m = f["movement"][axis];
+    std::cout << "  " << axis << " speed " << m["speed"].get<double>() << " deg/s, acceleration "
+              << m["acceleration"].get<double>() << " deg/s^2 (" << m["source"].get<std::string>() << ")\n";
+  }
+  if (!f["cells"].empty()) std::cout << "  " << f["cells"].size() << " cells:\n";
+  for (const auto& c : f["cells"]) {
+    std::cout << "    " << c["cell"].get<int>() << " " << c["name"].get<std::string>() << ": lens at ["
+              << c["lens_offset"][0].get<double>() << ", " << c["lens_offset"][1].get<double>() << ", "
+              << c["lens_offset"][2].get<double>() << "] m, field " << c["field_angle"].get<double>() << " deg, "
+              << c["lumens"].get<double>() << " lm\n";
+  }
   // Beam optics beyond the gobo.
   if (!f["frost"].is_null()) std::cout << "  frost up to " << f["frost"]["max"].get<double>() << " deg\n";
   for (const auto& p : f["prisms"])

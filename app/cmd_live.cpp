@@ -23,6 +23,7 @@
 #include "shows/dmx/live_playback.h"
 #include "shows/dmx/osc_command.h"
 #include "shows/dmx/udp_receiver.h"
+#include "shows/movement.h"
 #include "fixtures/core/atomic_file.h"
 #include "shows/cue_number.h"
 #include "shows/show.h"
@@ -46,11 +47,13 @@ constexpr const char* kUsage =
     "sACN multicast (239.255.hi.lo) is joined for the patched universes when --bind is not a\n"
     "loopback address, or with --multicast. Port 0 picks a free port (printed on stderr).\n"
     "--duration 0 (the default) runs until Ctrl-C.\n"
+    "--movement real|instant: heads follow DMX and cues at the fixtures' speeds (default) or jump at once.\n"
     "--osc PORT: OSC remote control on --bind:PORT (/haze/go, /haze/back, /haze/cue N,\n"
     "/haze/fixture/ID/ATTRIBUTE V, /haze/clear; docs/live.md). --timecode: ArtTimeCode fires the\n"
     "cues that have a \"timecode\". Both play --cue-list (default: the first list); fixtures on a\n"
-    "universe with DMX follow the console. --record-cue N: on exit, the stage is recorded into\n"
-    "cue N (tracking: only what differs) and the show saved safely.\n";
+    "universe with DMX follow the console. --record-cue N: on exit, the commanded stage (where the\n"
+    "heads are going, not where they are) is recorded into cue N (tracking: only what differs) and\n"
+    "the show saved safely.\n";
 
 volatile std::sig_atomic_t gStop = 0;
 void onSignal(int) { gStop = 1; }
@@ -127,7 +130,7 @@ void printReport(const LiveReceiver& live, double seconds, const ControlStats& c
 }  // namespace
 
 int runLive(const Args& args) {
-  std::string showPath, stateJson, renderOut, onLoss = "hold", quality = "default", exposureMode;
+  std::string showPath, stateJson, renderOut, onLoss = "hold", quality = "default", exposureMode, movement = "real";
   double exposure = std::nan("");
   LiveOptions options;
   RenderJobOptions render;
@@ -149,6 +152,7 @@ int runLive(const Args& args) {
       .flag("--multicast", options.udp.multicast)
       .choice("--on-loss", onLoss, {"hold", "blackout"})
       .flag("--no-preview", noPreview)
+      .choice("--movement", movement, {"real", "instant"})
       .text("--camera", render.camera, "a camera name")
       .integer("--width", render.width, 1, 16384, "a whole number 1..16384")
       .integer("--height", render.height, 1, 16384, "a whole number 1..16384")
@@ -270,6 +274,14 @@ int runLive(const Args& args) {
     return oscReply(p);
   };
   const double start = LiveReceiver::nowS();
+  // The heads follow each DMX value from the moment a poll returns with it (docs/movement.md);
+  // the command before it holds until then. They start where the first DMX puts them, as a rig
+  // that was switched on at the console's look.
+  MovementFollower heads(*show, *profiles);
+  StageState commanded =
+      playback ? livePlayback.stage(LiveReceiver::nowS(), receiver.state(), receiver.input().dmxFixtures()) : receiver.state();
+  heads.reset(commanded, 0.0);
+  bool seeded = false;
   while (!gStop) {
     const double elapsed = LiveReceiver::nowS() - start;
     if (duration > 0 && elapsed >= duration) break;
@@ -288,12 +300,23 @@ int runLive(const Args& args) {
         std::fprintf(stderr, "haze live: timecode %s: %s\n", tc.time.str().c_str(), what.c_str());
       }
     }
+    const double now = LiveReceiver::nowS() - start;
+    heads.advance(commanded, now, false);
+    commanded = playback ? livePlayback.stage(LiveReceiver::nowS(), receiver.state(), receiver.input().dmxFixtures())
+                         : receiver.state();
+    if (!seeded && receiver.stats().good > 0) {
+      heads.reset(commanded, now);
+      seeded = true;
+    }
     // Whole passes: a pass that found nothing waited waitMs; one that found a flood did its work.
     control.longestPassMs = std::max(control.longestPassMs, (LiveReceiver::nowS() - passStart) * 1000.0);
   }
   const StageState& dmxState = receiver.poll(0);
-  const StageState state =
+  // What the console and the cues command; the heads get there at their speeds.
+  const StageState commandedState =
       playback ? livePlayback.stage(LiveReceiver::nowS(), dmxState, receiver.input().dmxFixtures()) : dmxState;
+  const StageState moved = heads.advance(commandedState, LiveReceiver::nowS() - start, false);
+  const StageState& state = movement == "real" ? moved : commandedState;
   sigaction(SIGINT, &oldInt, nullptr);
   sigaction(SIGTERM, &oldTerm, nullptr);
   printReport(receiver, LiveReceiver::nowS() - start, control, osc != nullptr, timecode);
@@ -319,7 +342,8 @@ int runLive(const Args& args) {
     } else {
       // The playback above references the show; it is not used after this point.
       Result<std::string> rec =
-          recordLiveCue(*show, *profiles, state, fixtures, LiveRecord{cueList ? cueList->name : "", recordCue, recordLabel});
+          recordLiveCue(*show, *profiles, commandedState, fixtures,
+                        LiveRecord{cueList ? cueList->name : "", recordCue, recordLabel});
       if (!rec) status = fail(showPath + ": " + rec.error().str());
       else std::fprintf(stderr, "haze live: %s\n", rec->c_str());
     }

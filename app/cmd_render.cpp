@@ -12,6 +12,7 @@
 #include "app/commands.h"
 #include "app/progress.h"
 #include "app/render_session.h"
+#include "shows/movement.h"
 #include "app/render_video.h"
 #include "shows/playback.h"
 #include "shows/show.h"
@@ -40,7 +41,9 @@ constexpr const char* kUsage =
     "--fps N (default 25); a name with %05d writes one PNG or EXR per frame instead. --caption burns\n"
     "the cue number, label and time into video and PNG frames (never into EXRs). --timeline FILE.json\n"
     "gives the GO times: {\"go\": [{\"cue\": \"1\", \"at\": 0}, {\"cue\": \"2\", \"at\": 8.5}], \"end\": 20}.\n"
-    "--progress reports progress on stderr even when it is not a terminal (it always is on one).\n";
+    "--progress reports progress on stderr even when it is not a terminal (it always is on one).\n"
+    "--movement real|instant: pan, tilt and zoom at the fixtures' speeds (default) or at once (--at, --video).\n"
+    "--cells separate|merged: one beam per cell (default), or a fixture's alike cells as one beam.\n";
 
 std::string secondsText(double s) {
   char text[32];
@@ -51,7 +54,8 @@ std::string secondsText(double s) {
 }  // namespace
 
 int runRender(const Args& args) {
-  std::string showPath, cue, list, out, camera, quality = "default", exposureMode, exrPixel = "half";
+  std::string showPath, cue, list, out, camera, quality = "default", exposureMode, exrPixel = "half", movement = "real",
+                                                       cells = "separate";
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
   bool allCues = false, progress = false, caption = false;
@@ -70,6 +74,8 @@ int runRender(const Args& args) {
       .number("--exposure", exposure, -100, 100, "a number of EV")
       .choice("--exposure-mode", exposureMode, {"auto", "manual"})
       .number("--bloom", bloom, 0, 1, "a fraction 0..1")
+      .choice("--movement", movement, {"real", "instant"})
+      .choice("--cells", cells, {"separate", "merged"})
       .choice("--exr-pixel", exrPixel, {"half", "float"})
       .text("-o|--output", out, "a file or a folder")
       .text("--video", video, "a video file (OUT.mp4) or an image sequence (OUT-%05d.png)")
@@ -105,15 +111,16 @@ int runRender(const Args& args) {
 
   RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
                            .quality = *q, .exposureMode = parseExposureMode(exposureMode),
-                           .bloom = static_cast<float>(bloom), .exrPixel = *parseExrPixel(exrPixel),
-                           .progress = progress};
+                           .bloom = static_cast<float>(bloom), .mergeCells = cells == "merged",
+                           .exrPixel = *parseExrPixel(exrPixel), .progress = progress};
   if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
   auto session = RenderSession::open(*show, options);
   if (!session) return fail(session.error().str());
 
   if (!video.empty()) {
     VideoJob job{.list = cueList, .from = 0, .to = cueList->cues.size() - 1, .holdS = hold, .durationS = duration,
-                 .fps = fps, .codec = codec, .out = video, .progress = progress, .caption = caption};
+                 .fps = fps, .codec = codec, .out = video, .progress = progress, .caption = caption,
+                 .realMovement = movement == "real"};
     for (auto [number, index] : {std::pair{&from, &job.from}, std::pair{&to, &job.to}}) {
       if (number->empty()) continue;
       auto found = findCue(*cueList, *number);
@@ -136,8 +143,9 @@ int runRender(const Args& args) {
   }
 
   auto renderCue = [&](size_t index, const std::filesystem::path& file) -> bool {
-    const StageState state = at >= 0 ? stateAt(*show, *profiles, *cueList, index, at)
-                                     : trackedState(*show, *profiles, *cueList, index);
+    const StageState state = at < 0 ? trackedState(*show, *profiles, *cueList, index)
+                             : movement == "real" ? movingStateAt(*show, *profiles, *cueList, index, at)
+                                                  : stateAt(*show, *profiles, *cueList, index, at);
     const Cue& c = cueList->cues[index];
     const std::string comment = "haze render of " + showPath + ", cue list " + cueList->name + ", cue " + c.number +
                                 (c.label.empty() ? "" : " \"" + c.label + "\"") +

@@ -11,6 +11,7 @@
 #include "app/commands.h"
 #include "app/state_json.h"
 #include "shows/cue_player.h"
+#include "shows/movement.h"
 #include "shows/playback.h"
 #include "shows/show_json.h"
 
@@ -19,10 +20,11 @@ namespace haze {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: haze state SHOW --cue N [--at S] [--list NAME] [--follow] [--json]\n"
+    "usage: haze state SHOW --cue N [--at S] [--list NAME] [--follow] [--movement real|instant] [--json]\n"
     "  The state of every fixture S seconds after GO into cue N (default: the cue's full state).\n"
     "  --list NAME  the cue list (default: the first)\n"
     "  --follow     let follows fire after cue N, as on stage\n"
+    "  --movement   real (default): pan, tilt and zoom at the fixtures' speeds; instant: at once\n"
     "  --json       {\"<fixture id>\": {\"intensity\", \"pan\", \"tilt\", \"color\", \"zoom\", \"gobo\", "
     "\"gobo_rotation\", \"iris\",\n"
     "               \"frost\", \"prism\", \"prism_rotation\", \"blades\", \"blade_rotation\", \"shutter\",\n"
@@ -31,7 +33,7 @@ constexpr const char* kUsage =
 }  // namespace
 
 int runState(const Args& args) {
-  std::string file, cueNumber, listName;
+  std::string file, cueNumber, listName, movement = "real";
   double atS = 1e9;  // no --at: the cue's full state
   bool json = false, follow = false;
   CommandLine cli("haze state", kUsage, 2);
@@ -40,6 +42,7 @@ int runState(const Args& args) {
       .text("--list", listName, "a cue list name")
       .flag("--json", json)
       .flag("--follow", follow)
+      .choice("--movement", movement, {"real", "instant"})
       .positional(file, "show");
   if (auto done = cli.parse(args)) return *done;
   if (cueNumber.empty()) return cli.fail("expected --cue N");
@@ -71,9 +74,16 @@ int runState(const Args& args) {
     CuePlayer player(*show, *profiles, *list);
     if (*cue > 0) player.jumpTo(*cue - 1, 0.0);
     player.gotoCue(*cue, 0.0);
-    state = player.state(atS);
+    if (movement == "real") {
+      state = followCommand(
+          *show, *profiles, [&](double t) { return player.state(t); },
+          [&](double t) { return !player.fading(t) && !player.nextFollowAtS(); }, atS);
+    } else {
+      state = player.state(atS);
+    }
   } else {
-    state = stateAt(*show, *profiles, *list, *cue, atS);
+    state = movement == "real" ? movingStateAt(*show, *profiles, *list, *cue, atS)
+                               : stateAt(*show, *profiles, *list, *cue, atS);
   }
 
   // The strobe runs on the playback clock, which starts at GO: --at is also the gate's time.

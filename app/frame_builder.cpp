@@ -1,7 +1,11 @@
 #include "app/frame_builder.h"
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
+#include <vector>
+
+#include "app/cell_merge.h"
 
 namespace haze {
 namespace {
@@ -42,8 +46,16 @@ MediumState mediumState(const AtmosphereDef& def) {
   return m;
 }
 
+uint64_t poseCacheKey(const BeamPose& pose) {
+  uint64_t pk = kFnvBasis;
+  pk = hashValue(pk, pose.lensPosition);
+  pk = hashValue(pk, pose.zb);
+  pk = hashValue(pk, pose.xb);
+  return pk;
+}
+
 Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, const StageState& state,
-                              const std::string& cameraName, std::optional<FrameTime> time) {
+                              const std::string& cameraName, const FrameOptions& options) {
   FrameState frame;
   if (!cameraName.empty()) {
     const CameraDef* found = nullptr;
@@ -69,35 +81,51 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
     const Profile& profile = *p->second;
     const auto s = state.find(f.id);
     const Attributes a = s != state.end() ? s->second : Attributes{};
+    const std::optional<FrameTime>& time = options.time;
     const float gate = time ? shutterAverage(a.shutter, time->timeS, time->timeS + time->exposureS) : shutterMean(a.shutter);
     if (a.intensity * gate <= 0.0f) continue;  // a dark fixture adds nothing to any pixel
-    BeamState b;
-    b.fixtureId = f.id;
-    b.pose = beamPose(f.position, f.rotationDeg, a.panDeg, a.tiltDeg, profile.lensOffset);
-    b.optics = profile.optics(a);
-    b.optics.dimmer *= gate;
-    uint64_t ok = kFnvBasis;
-    ok = hashValue(ok, b.optics.distribution.get());
-    ok = hashValue(ok, b.optics.profileFieldAngleDeg);
-    ok = hashValue(ok, b.optics.fieldAngleDeg);
-    ok = hashValue(ok, b.optics.gobo.get());
-    ok = hashValue(ok, b.optics.goboRotationDeg);
-    ok = hashValue(ok, b.optics.iris);
-    ok = hashValue(ok, b.optics.blades);
-    b.opticsKey = ok;
-    // A prism: one beam per facet, each with 1/N of the light (the copies share one light map).
+    // One beam per cell of a multi-cell fixture (docs/cells.md), else the profile's one beam.
+    // Every cell passes the fixture's shutter, blades and frost.
+    const size_t beams = std::max<size_t>(1, profile.cells.size());
+    std::vector<BeamState> fixtureBeams;
+    for (size_t cell = 0; cell < beams; ++cell) {
+      BeamState b;
+      b.fixtureId = f.id;
+      if (profile.cells.empty()) {
+        b.pose = beamPose(f.position, f.rotationDeg, a.panDeg, a.tiltDeg, profile.lensOffset);
+        b.optics = profile.optics(a);
+      } else {
+        b.cell = static_cast<int>(cell);
+        b.optics = cellOptics(profile, a, cell);
+        if (b.optics.dimmer <= 0.0f) continue;
+        b.pose = beamPose(f.position, f.rotationDeg, a.panDeg, a.tiltDeg, profile.cells[cell].lensOffset);
+      }
+      b.optics.dimmer *= gate;
+      b.poseKey = poseCacheKey(b.pose);
+      uint64_t ok = kFnvBasis;
+      ok = hashValue(ok, b.optics.distribution.get());  // per cell, and frosted when frost is in
+      ok = hashValue(ok, b.optics.profileFieldAngleDeg);
+      ok = hashValue(ok, b.optics.fieldAngleDeg);
+      ok = hashValue(ok, b.optics.gobo.get());
+      ok = hashValue(ok, b.optics.goboRotationDeg);
+      ok = hashValue(ok, b.optics.iris);
+      ok = hashValue(ok, b.optics.blades);
+      b.opticsKey = ok;
+      fixtureBeams.push_back(std::move(b));
+    }
+    if (options.mergeCells) mergeCellBeams(fixtureBeams);
+    // A prism: one beam per facet for each cell's beam, each with 1/N of its light (the copies
+    // share one light map).
     const PrismSpec* prism = profile.findPrism(a.prism);
-    const std::vector<BeamPose> poses = prism ? prismCopies(b.pose, *prism, a.prismRotationDeg) : std::vector<BeamPose>{b.pose};
-    b.optics.dimmer /= static_cast<float>(poses.size());
-    for (const BeamPose& pose : poses) {
-      BeamState copy = b;
-      copy.pose = pose;
-      uint64_t pk = kFnvBasis;
-      pk = hashValue(pk, copy.pose.lensPosition);
-      pk = hashValue(pk, copy.pose.zb);
-      pk = hashValue(pk, copy.pose.xb);
-      copy.poseKey = pk;
-      frame.beams.push_back(std::move(copy));
+    for (BeamState& b : fixtureBeams) {
+      const std::vector<BeamPose> poses = prism ? prismCopies(b.pose, *prism, a.prismRotationDeg) : std::vector<BeamPose>{b.pose};
+      b.optics.dimmer /= static_cast<float>(poses.size());
+      for (const BeamPose& pose : poses) {
+        BeamState copy = b;
+        copy.pose = pose;
+        copy.poseKey = poseCacheKey(copy.pose);
+        frame.beams.push_back(std::move(copy));
+      }
     }
   }
   return frame;

@@ -20,10 +20,18 @@ struct FrameTime {
   double exposureS = 0.0;
 };
 
+struct FrameOptions {
+  // Cells of one fixture that share a light map drawn as one beam (docs/cells.md, "Cost").
+  bool mergeCells = false;
+  std::optional<FrameTime> time;  // none: a still
+};
+
 // cameraName "" = the show's first camera (or a default view of the stage when it has none).
 // A fixture with a prism in becomes one beam per facet (docs/physics.md, "Prism").
 Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, const StageState& state,
-                              const std::string& cameraName, std::optional<FrameTime> time = std::nullopt);
+                              const std::string& cameraName, const FrameOptions& options = {});
+// The renderer's shadow-map cache key of a pose (equal keys promise equal poses).
+uint64_t poseCacheKey(const BeamPose& pose);
 
 CameraState cameraState(const CameraDef& def);
 MediumState mediumState(const AtmosphereDef& def);

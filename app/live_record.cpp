@@ -21,6 +21,14 @@ CueValues everything(const Attributes& a) {
   v.gobo = a.gobo;
   v.goboRotationDeg = a.goboRotationDeg;
   v.iris = a.iris;
+  v.frost = a.frost;
+  v.prism = a.prism;
+  v.prismRotationDeg = a.prismRotationDeg;
+  v.blades = a.blades;
+  v.bladeRotationDeg = a.bladeRotationDeg;
+  v.shutter = a.shutter;
+  for (size_t k = 0; k < a.cells.size(); ++k)
+    v.cells[static_cast<int>(k)] = CellValues{a.cells[k].intensity, a.cells[k].color};
   return v;
 }
 }  // namespace
@@ -64,7 +72,9 @@ Result<std::string> recordLiveCue(Show& show, const ProfileSet& profiles, const 
   if (auto at = findCue(into, r.number))
     for (const auto& [id, v] : into.cues[*at].values)
       values += v.intensity.has_value() + v.panDeg.has_value() + v.tiltDeg.has_value() + v.color.has_value() +
-                v.zoomDeg.has_value() + v.gobo.has_value() + v.goboRotationDeg.has_value() + v.iris.has_value();
+                v.zoomDeg.has_value() + v.gobo.has_value() + v.goboRotationDeg.has_value() + v.iris.has_value() +
+                v.frost.has_value() + v.prism.has_value() + v.prismRotationDeg.has_value() + v.blades.has_value() +
+                v.bladeRotationDeg.has_value() + v.shutter.has_value() + v.cells.size();
   const std::filesystem::path file = show.file;
   if (Status s = saveShow(show, file); !s) return s.error();
   return std::string(exists ? "updated" : "recorded") + " cue " + r.number + " from " + std::to_string(fixtures.size()) +

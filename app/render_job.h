@@ -26,6 +26,7 @@ struct RenderJobOptions {
   std::optional<ExposureMode> exposureMode;
   std::optional<float> exposureEv;
   float bloom = 0.0f;  // PNG only
+  bool mergeCells = false;  // docs/cells.md, "Cost": a fixture's alike cells as one beam
   ExrPixel exrPixel = ExrPixel::Half;  // EXR only
   bool progress = false;  // --progress: report even when stderr is not a terminal (app/progress.h)
 };

@@ -68,7 +68,7 @@ Result<std::unique_ptr<RenderSession>> RenderSession::open(const Show& show, con
 }
 
 Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const StageState& state, bool reportRows) {
-  auto frame = buildFrame(show, profiles, state, options_.camera);
+  auto frame = buildFrame(show, profiles, state, options_.camera, FrameOptions{.mergeCells = options_.mergeCells});
   if (!frame) return frame.error();
   referenceImage_.reset();
   if (options_.quality == Quality::Reference) {

@@ -17,6 +17,7 @@
 #include "renderer/scene/image.h"
 #include "shows/cue_player.h"
 #include "shows/cue_timeline.h"
+#include "shows/movement.h"
 
 namespace haze {
 namespace {
@@ -129,6 +130,7 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
   if (firstCue > 0) player.jumpTo(firstCue - 1, 0.0);
   size_t nextGo = 0;
   StageState lastState;
+  MovementFollower heads(show, profiles);  // the command between frames is interpolated
   std::vector<unsigned char> rgb;
   ImageRGB radiance;
   int drawn = 0;
@@ -147,6 +149,10 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
     // Frames of a hold (or of a delay) show an unchanged stage: the frame state is built from
     // the stage state alone, so the last picture is that frame exactly and is not drawn again.
     StageState state = player.state(t);
+    if (job.realMovement) {
+      if (f == 0) heads.reset(state, t);
+      state = heads.advance(state, t, true);
+    }
     if (f == 0 || state != lastState) {
       if (Status s = session.draw(show, profiles, state); !s) return s.error();
       if (exr)

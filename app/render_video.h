@@ -25,6 +25,8 @@ struct VideoJob {
   bool caption = false;     // burn "cue N label, t s" into video and PNG frames
   // --timeline FILE.json: the operator's GO times instead of from..to with holds.
   std::optional<CueTimeline> timeline;
+  // Heads travel at the fixtures' speeds (docs/movement.md); false: --movement instant.
+  bool realMovement = true;
 };
 
 // {"go": [{"cue": "1", "at": 0}, {"cue": "2", "at": 8.5}, ...], "end": 30}: GO presses at

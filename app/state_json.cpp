@@ -13,9 +13,12 @@ nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profil
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
   for (const auto& [id, a] : state) {
     std::optional<float> zoom = a.zoomDeg;
-    if (!zoom)
-      if (const FixtureDef* f = show.findFixture(id))
-        if (auto p = profiles.find(f->profile); p != profiles.end() && p->second) zoom = p->second->fieldAngleDeg;
+    size_t cells = 0;
+    if (const FixtureDef* f = show.findFixture(id))
+      if (auto p = profiles.find(f->profile); p != profiles.end() && p->second) {
+        if (!zoom) zoom = p->second->fieldAngleDeg;
+        cells = p->second->cells.size();
+      }
     nlohmann::ordered_json o;
     o["intensity"] = tidy(a.intensity);
     o["pan"] = tidy(a.panDeg);
@@ -25,6 +28,14 @@ nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profil
     o["gobo"] = a.gobo;
     o["gobo_rotation"] = tidy(a.goboRotationDeg);
     o["iris"] = tidy(a.iris);
+    if (cells > 0) {  // docs/cells.md: every cell of the profile, 1 and white where unset
+      nlohmann::ordered_json list = nlohmann::ordered_json::array();
+      for (size_t k = 0; k < cells; ++k) {
+        const CellAttributes c = cellAttributes(a, k);
+        list.push_back({{"intensity", tidy(c.intensity)}, {"color", {tidy(c.color.r), tidy(c.color.g), tidy(c.color.b)}}});
+      }
+      o["cells"] = std::move(list);
+    }
     o["frost"] = tidy(a.frost);
     o["prism"] = a.prism;
     o["prism_rotation"] = tidy(a.prismRotationDeg);

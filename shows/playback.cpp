@@ -25,6 +25,12 @@ void overlayValues(Attributes& a, const CueValues& v) {
   if (v.gobo) a.gobo = *v.gobo;
   if (v.goboRotationDeg) a.goboRotationDeg = *v.goboRotationDeg;
   if (v.iris) a.iris = *v.iris;
+  for (const auto& [k, cv] : v.cells) {
+    if (k < 0) continue;
+    if (a.cells.size() <= static_cast<size_t>(k)) a.cells.resize(static_cast<size_t>(k) + 1);
+    if (cv.intensity) a.cells[static_cast<size_t>(k)].intensity = *cv.intensity;
+    if (cv.color) a.cells[static_cast<size_t>(k)].color = *cv.color;
+  }
   if (v.frost) a.frost = *v.frost;
   if (v.prism) a.prism = *v.prism;
   if (v.prismRotationDeg) a.prismRotationDeg = *v.prismRotationDeg;
@@ -68,6 +74,12 @@ Attributes blendAttributes(const Attributes& from, const Attributes& to, double 
   a.color = from.color + (to.color - from.color) * f;
   a.goboRotationDeg = lerp(from.goboRotationDeg, to.goboRotationDeg, f);
   a.iris = lerp(from.iris, to.iris, f);
+  a.cells.resize(std::max(from.cells.size(), to.cells.size()));
+  for (size_t k = 0; k < a.cells.size(); ++k) {
+    const CellAttributes c0 = cellAttributes(from, k), c1 = cellAttributes(to, k);
+    a.cells[k].intensity = lerp(c0.intensity, c1.intensity, f);
+    a.cells[k].color = c0.color + (c1.color - c0.color) * f;
+  }
   // Optics: prism and shutter switched with the gobo (a = to); the rest fades.
   a.frost = lerp(from.frost, to.frost, f);
   a.prismRotationDeg = lerp(from.prismRotationDeg, to.prismRotationDeg, f);

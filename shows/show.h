@@ -61,11 +61,19 @@ struct FixtureDef {
   std::optional<Patch> patch;
 };
 
+// What a cue sets for one cell of a multi-cell fixture (docs/cells.md).
+struct CellValues {
+  std::optional<float> intensity;
+  std::optional<glm::vec3> color;
+  bool operator==(const CellValues&) const = default;
+};
+
 // The attributes a cue sets for one fixture; unset ones track from earlier cues.
 struct CueValues {
   std::optional<float> intensity, panDeg, tiltDeg, zoomDeg, goboRotationDeg, iris;
   std::optional<glm::vec3> color;
   std::optional<std::string> gobo;
+  std::map<int, CellValues> cells;  // by cell index (0-based; the file counts from 1)
   // Beam optics beyond the gobo (docs/show-format.md).
   std::optional<float> frost, prismRotationDeg, bladeRotationDeg;
   std::optional<std::string> prism;

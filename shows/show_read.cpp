@@ -363,6 +363,31 @@ bool readFixtureKey(Reader& r, const std::string& key, const std::string& p, int
   return true;
 }
 
+// "cells": {"1": {"intensity", "color"}, ...}: cells counted from 1 (docs/cells.md).
+void readCellValues(Reader& r, const json& cells, const std::string& cp, CueValues& v) {
+  if (!r.isObject(cells, cp, "values by cell number")) return;
+  for (auto it = cells.begin(); it != cells.end(); ++it) {
+    const std::string p = cp + "/" + pointerToken(it.key());
+    long long n = 0;
+    auto [end, ec] = std::from_chars(it.key().data(), it.key().data() + it.key().size(), n);
+    if (it.key().empty() || it.key()[0] == '0' || ec != std::errc() || end != it.key().data() + it.key().size() ||
+        n < 1 || n > 4096) {
+      r.problem(p, "expected a cell number (1 to 4096, written as a string like \"3\"), got \"" + it.key() + "\"");
+      continue;
+    }
+    const json& c = *it;
+    if (!r.isObject(c, p, "cell values")) continue;
+    r.onlyKeys(c, p, {"intensity", "color"});
+    CellValues cv;
+    double x = 0;
+    if (const json* j = r.member(c, p, "intensity", false))
+      if (r.number(*j, p + "/intensity", 0.0, 1.0, "an intensity", x)) cv.intensity = static_cast<float>(x);
+    glm::vec3 col{1.0f};
+    if (r.vec3Member(c, p, "color", false, 0.0, 1.0, "a colour component", col)) cv.color = col;
+    v.cells[static_cast<int>(n - 1)] = cv;
+  }
+}
+
 // frost, prism, prism_rotation, blades, blade_rotation, shutter (docs/show-format.md).
 void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues& v) {
   double x = 0;
@@ -445,7 +470,7 @@ void readValues(Reader& r, const json& vals, const std::string& vp, Cue& cue) {
     const json& a = *it;
     if (!r.isObject(a, p, "attribute values")) continue;
     r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris", "frost", "prism",
-                      "prism_rotation", "blades", "blade_rotation", "shutter"});
+                      "prism_rotation", "blades", "blade_rotation", "shutter", "cells"});
     CueValues v;
     double x = 0;
     auto num = [&](const char* key, double lo, double hi, const char* what, std::optional<float>& out) {
@@ -462,6 +487,7 @@ void readValues(Reader& r, const json& vals, const std::string& vp, Cue& cue) {
     if (r.vec3Member(a, p, "color", false, 0.0, 1.0, "a colour component", c)) v.color = c;
     std::string gobo;
     if (r.stringMember(a, p, "gobo", false, "a gobo slot name", gobo, true)) v.gobo = gobo;
+    if (const json* cells = r.member(a, p, "cells", false)) readCellValues(r, *cells, p + "/cells", v);
     readOpticsValues(r, a, p, v);
     cue.values[id] = v;
   }

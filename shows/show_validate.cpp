@@ -184,6 +184,12 @@ struct Checker {
         problem(vp + "/gobo", "profile \"" + f->profile + "\" has no gobo slot \"" + *v.gobo +
                                   "\" on its first gobo wheel; expected one of: " + joinNames(slots));
       }
+      for (const auto& [k, cv] : v.cells)
+        if (static_cast<size_t>(k) >= prof->cells.size())
+          problem(vp + "/cells/" + std::to_string(k + 1),
+                  "profile \"" + f->profile + "\" has " +
+                      (prof->cells.empty() ? std::string("no cells") : std::to_string(prof->cells.size()) + " cells") +
+                      "; expected a cell number from 1 to the profile's cell count (docs/cells.md)");
       optics(vp, v, *prof, f->profile);
     }
   }

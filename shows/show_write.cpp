@@ -84,6 +84,16 @@ ojson valuesJson(const CueValues& v) {
   if (v.gobo) o["gobo"] = *v.gobo;
   if (v.goboRotationDeg) o["gobo_rotation"] = tidy(*v.goboRotationDeg);
   if (v.iris) o["iris"] = tidy(*v.iris);
+  if (!v.cells.empty()) {
+    ojson cells = ojson::object();
+    for (const auto& [k, cv] : v.cells) {
+      ojson c = ojson::object();
+      if (cv.intensity) c["intensity"] = tidy(*cv.intensity);
+      if (cv.color) c["color"] = vec(*cv.color);
+      cells[std::to_string(k + 1)] = std::move(c);
+    }
+    o["cells"] = std::move(cells);
+  }
   if (v.frost) o["frost"] = tidy(*v.frost);
   if (v.prism) o["prism"] = *v.prism;
   if (v.prismRotationDeg) o["prism_rotation"] = tidy(*v.prismRotationDeg);

@@ -27,6 +27,7 @@
 #include <imgui_internal.h>  // GetItemID: which widget an edit came from (undo merging)
 
 #include "shows/edit/show_document.h"
+#include "shows/movement.h"
 #include "app/render_job.h"
 #include "renderer/scene/frame_state.h"
 
@@ -66,6 +67,10 @@ struct Gui {
   Layout layout;
   double nowS = 0.0;
   StageState stage;  // what is on stage this frame (playback + programmer, or live)
+  // Heads at the fixtures' own speeds (docs/movement.md); View > Real movement turns it off.
+  bool realMovement = true;
+  std::unique_ptr<MovementFollower> heads;
+  const ShowDocument* headsDoc = nullptr;  // the document `heads` follows
 
   // View.
   Orbit orbit;

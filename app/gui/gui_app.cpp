@@ -166,6 +166,27 @@ void initImGui(Gui& gui) {
   ImGui_ImplOpenGL3_Init("#version 450");
 }
 
+// The stage as the heads really are: cue fades are sampled once a frame (the command moves
+// linearly between frames), live DMX values are steps.
+void followHeads(Gui& gui) {
+  if (!gui.realMovement) {
+    gui.heads.reset();
+    return;
+  }
+  if (!gui.heads || gui.headsDoc != gui.doc.get()) {
+    gui.heads = std::make_unique<MovementFollower>(gui.doc->show(), gui.doc->profiles());
+    gui.heads->reset(gui.stage, gui.nowS);
+    gui.headsDoc = gui.doc.get();
+  }
+  // Live, the heads start where the first DMX puts them (as `haze live`), once per receiver.
+  static const LiveReceiver* seededFor = nullptr;
+  if (gui.live && gui.live.get() != seededFor && gui.live->stats().good > 0) {
+    gui.heads->reset(gui.stage, gui.nowS);
+    seededFor = gui.live.get();
+  }
+  gui.stage = gui.heads->advance(gui.stage, gui.nowS, !gui.live);
+}
+
 // Every panel of one frame, from input to ImGui's draw lists.
 void drawPanels(Gui& gui, int winW, int winH) {
   ImGui_ImplOpenGL3_NewFrame();
@@ -174,6 +195,7 @@ void drawPanels(Gui& gui, int winW, int winH) {
   if (!ImGui::IsAnyItemActive()) gui.mergeItem = 0;  // the next widget edit starts a new undo step
   gui.layout = layoutFor(static_cast<float>(winW), static_cast<float>(winH), ImGui::GetFrameHeight());
   gui.stage = gui.live ? gui.live->poll(0) : gui.doc->stageState(gui.nowS);
+  followHeads(gui);
 
   handleShortcuts(gui);
   drawMenuBar(gui);
@@ -237,7 +259,8 @@ struct ChangeWatch {
   std::uint64_t revision = 0;
 
   bool changing(const Gui& gui) {
-    const bool changed = gui.live || gui.doc->fading(gui.nowS) || !(gui.orbit == orbit) || gui.fovYDeg != fovDeg ||
+    const bool moving = gui.heads && !gui.heads->settled();
+    const bool changed = gui.live || gui.doc->fading(gui.nowS) || moving || !(gui.orbit == orbit) || gui.fovYDeg != fovDeg ||
                          gui.doc->revision() != revision;
     orbit = gui.orbit;
     fovDeg = gui.fovYDeg;
@@ -255,12 +278,16 @@ constexpr int kMaxStillFrames = 64;
 Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watch, int vx, int vy, int vw, int vh) {
   const auto t0 = std::chrono::steady_clock::now();
   // Edits made this frame show this frame.
-  if (!gui.live && gui.doc->revision() != watch.revision) gui.stage = gui.doc->stageState(gui.nowS);
+  if (!gui.live && gui.doc->revision() != watch.revision) {
+    gui.stage = gui.doc->stageState(gui.nowS);
+    followHeads(gui);
+  }
   // Each flashing frame shows the shutter's mean over about one frame's time.
   const bool flash = flashing(gui.stage);
   const double exposureS = std::clamp(gui.frameMs / 1000.0, 1.0 / 120.0, 0.1);
-  auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "",
-                               flash ? std::optional<FrameTime>(FrameTime{gui.nowS, exposureS}) : std::nullopt);
+  FrameOptions frameOptions;
+  if (flash) frameOptions.time = FrameTime{gui.nowS, exposureS};
+  auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "", frameOptions);
   if (!frameState) return frameState.error();
   frameState->camera = gui.cameraState();
   const bool changing = watch.changing(gui) || flash;

@@ -155,6 +155,9 @@ void drawMenuBar(Gui& gui) {
     const char* names[] = {"Draft", "Default", "High"};
     for (int q = 0; q < 3; ++q)
       if (ImGui::MenuItem(names[q], nullptr, static_cast<int>(gui.quality) == q)) gui.quality = static_cast<Quality>(q);
+    ImGui::Separator();
+    // docs/movement.md: off, heads jump to every value at once.
+    ImGui::MenuItem("Real movement speeds", nullptr, &gui.realMovement);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

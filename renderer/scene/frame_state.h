@@ -41,6 +41,7 @@ struct MediumState {
 
 struct BeamState {
   int fixtureId = 0;
+  int cell = -1;  // the cell of a multi-cell fixture this beam is (docs/cells.md); -1: the fixture's one beam
   BeamPose pose;
   BeamOptics optics;
   // Changes whenever pose or optics change: the GPU renderer keys its shadow-map and

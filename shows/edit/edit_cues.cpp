@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "fixtures/cells.h"
 #include "shows/cue_number.h"
 #include "shows/edit/edit_commands.h"
 #include "shows/edit/edit_cue_number.h"
@@ -67,6 +68,15 @@ void compareField(const Attributes& before, const CueValues& p, Same same, Diffe
 void fold(const Attributes& before, const CueValues& p, CueValues& cue) {
   compareField(
       before, p, [&](auto member) { (cue.*member).reset(); }, [&](auto member) { cue.*member = p.*member; });
+  // Cells per cell and value (docs/cells.md), as the fixture's own values.
+  for (const auto& [k, pc] : p.cells) {
+    if (k < 0) continue;
+    const CellAttributes b = cellAttributes(before, static_cast<size_t>(k));
+    CellValues& c = cue.cells[k];
+    if (pc.intensity) c.intensity = *pc.intensity == b.intensity ? std::nullopt : pc.intensity;
+    if (pc.color) c.color = *pc.color == b.color ? std::nullopt : pc.color;
+    if (!c.intensity && !c.color) cue.cells.erase(k);
+  }
 }
 
 class RecordCue final : public EditCommand {

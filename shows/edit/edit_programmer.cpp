@@ -76,6 +76,10 @@ class SetProgrammer final : public EditCommand {
       if (v.blades) p.blades = v.blades;
       if (v.bladeRotationDeg) p.bladeRotationDeg = v.bladeRotationDeg;
       if (v.shutter) p.shutter = v.shutter;
+      for (const auto& [k, c] : v.cells) {
+        if (c.intensity) p.cells[k].intensity = c.intensity;
+        if (c.color) p.cells[k].color = c.color;
+      }
     }
     after_ = entriesOf(t.programmer, ids);
     return Ok{};

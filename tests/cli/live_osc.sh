@@ -28,7 +28,7 @@ if "$HAZE" live "$ROOT/tests/data/live/cues.haze.json" --osc 6454 --duration 1 2
 fi
 grep -q "expected a port of its own" "$TMP/err" || fail "no clear message for --osc on the Art-Net port"
 
-"$HAZE" live "$ROOT/tests/data/live/cues.haze.json" --sacn --sacn-port 0 --osc 0 \
+"$HAZE" live "$ROOT/tests/data/live/cues.haze.json" --sacn --sacn-port 0 --osc 0 --movement instant \
   --state-json "$TMP/state.json" 2>"$TMP/err" &
 HAZE_PID=$!
 PORT=""

@@ -26,7 +26,7 @@ fail() { echo "FAIL: $*"; echo "--- haze stderr:"; cat "$TMP/err" 2>/dev/null; e
 
 command -v node >/dev/null || fail "node is not installed"
 
-"$HAZE" live "$ROOT/tests/data/live/live.haze.json" --sacn --sacn-port 0 \
+"$HAZE" live "$ROOT/tests/data/live/live.haze.json" --sacn --sacn-port 0 --movement instant \
   --state-json "$TMP/state.json" 2>"$TMP/err" &
 HAZE_PID=$!
 PORT=""

@@ -11,6 +11,7 @@
 #include "app/frame_builder.h"
 #include "app/render_session.h"
 #include "fixtures/blades.h"
+#include "fixtures/cells.h"
 #include "fixtures/prism.h"
 #include "render_test_util.h"
 #include "renderer/reference/reference.h"
@@ -141,11 +142,73 @@ TEST(OpticsFrame, PrismBecomesNBeamsAndAStillStrobeItsDuty) {
     EXPECT_NEAR(std::acos(glm::dot(b.pose.zb, glm::vec3(0, -1, 0))), 10.0f * 3.14159265f / 180.0f, 1e-4f);
   }
   // A frame at a moment: open for the first quarter of each 1/30 s period, closed after.
-  auto open = buildFrame(show, profiles, stage, "", FrameTime{0.001, 0.0});
+  auto open = buildFrame(show, profiles, stage, "", FrameOptions{.time = FrameTime{0.001, 0.0}});
   ASSERT_TRUE(open.ok());
   ASSERT_EQ(open->beams.size(), 5u);
   EXPECT_NEAR(open->beams[0].optics.dimmer, 0.8f / 5.0f, 1e-6f);
-  auto closed = buildFrame(show, profiles, stage, "", FrameTime{0.02, 0.0});
+  auto closed = buildFrame(show, profiles, stage, "", FrameOptions{.time = FrameTime{0.02, 0.0}});
+  ASSERT_TRUE(closed.ok());
+  EXPECT_TRUE(closed->beams.empty());
+}
+
+// A multi-cell fixture (docs/cells.md): every lit cell passes the fixture's shutter, blades and
+// frost, and the prism copies each cell's beam; --cells merged merges before the prism.
+TEST(OpticsFrame, EveryCellGetsTheShutterBladesFrostAndPrism) {
+  Show show;
+  show.file = "cells.haze.json";
+  show.fixtures.push_back(FixtureDef{.id = 1, .name = "", .profile = "wash", .mode = "", .position = {0, 5, 0}, .rotationDeg = {}, .patch = {}});
+  auto profile = std::make_shared<Profile>();
+  auto d = parametricDistribution(10.0f, 16.0f, 1000.0f);
+  ASSERT_TRUE(d.ok());
+  profile->distribution = std::make_shared<const Distribution>(*d);
+  profile->fieldAngleDeg = 16.0f;
+  profile->zoomDeg = {16.0f, 16.0f};
+  profile->prisms.push_back(PrismSpec{"3", 3, 10.0f, false});
+  profile->hasBlades = true;
+  profile->hasFrost = true;
+  for (float x : {-0.1f, 0.0f, 0.1f}) {
+    Cell c;
+    c.name = "cell";
+    c.lensOffset = {x, 0.0f, 0.0f};
+    c.distribution = profile->distribution;
+    c.fieldAngleDeg = 16.0f;
+    profile->cells.push_back(c);
+  }
+  ProfileSet profiles{{"wash", profile}};
+  Attributes a;
+  a.intensity = 0.8f;
+  a.prism = "3";
+  a.shutter = Shutter{ShutterMode::Strobe, 30.0f, 0.25f};
+  a.blades[0] = {0.3f, 0.3f};
+  a.frost = 0.5f;
+  a.cells = {CellAttributes{1.0f, glm::vec3(1.0f)}, CellAttributes{0.0f, glm::vec3(1.0f)}, CellAttributes{0.5f, glm::vec3(1.0f)}};
+  const StageState stage{{1, a}};
+  auto frame = buildFrame(show, profiles, stage, "");
+  ASSERT_TRUE(frame.ok()) << frame.error().str();
+  ASSERT_EQ(frame->beams.size(), 6u);  // 2 lit cells x 3 facets
+  const BladeMask mask = bladeMask(a.blades, 0.0f);
+  for (const BeamState& b : frame->beams) {
+    const float cell = b.cell == 0 ? 1.0f : 0.5f;
+    ASSERT_TRUE(b.cell == 0 || b.cell == 2);
+    EXPECT_NEAR(b.optics.dimmer, 0.8f * cell * 0.25f / 3.0f, 1e-6f);
+    EXPECT_TRUE(b.optics.blades == mask);
+    EXPECT_NE(b.optics.distribution.get(), profile->distribution.get());  // frosted
+    EXPECT_EQ(b.opticsKey, frame->beams.front().opticsKey);
+    EXPECT_NEAR(std::acos(glm::dot(b.pose.zb, glm::vec3(0, -1, 0))), 10.0f * 3.14159265f / 180.0f, 1e-4f);
+  }
+  // Without blades the light map differs, so the key does.
+  Attributes clear = a;
+  clear.blades = {};
+  auto unbladed = buildFrame(show, profiles, StageState{{1, clear}}, "");
+  ASSERT_TRUE(unbladed.ok());
+  EXPECT_NE(unbladed->beams.front().opticsKey, frame->beams.front().opticsKey);
+  // Merged: the two alike cells become one beam, then three prism copies of it.
+  auto merged = buildFrame(show, profiles, stage, "", FrameOptions{.mergeCells = true});
+  ASSERT_TRUE(merged.ok());
+  ASSERT_EQ(merged->beams.size(), 3u);
+  for (const BeamState& b : merged->beams) EXPECT_NEAR(b.optics.dimmer, 0.8f * 1.5f * 0.25f / 3.0f, 1e-6f);
+  // A moment when the shutter is closed: no cell draws.
+  auto closed = buildFrame(show, profiles, stage, "", FrameOptions{.time = FrameTime{0.02, 0.0}});
   ASSERT_TRUE(closed.ok());
   EXPECT_TRUE(closed->beams.empty());
 }

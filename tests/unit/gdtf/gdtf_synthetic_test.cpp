@@ -175,6 +175,7 @@ TEST(GdtfSynthetic, MapsDmxOffsetsBytesAndWheelSlots) {
   EXPECT_NEAR(img->transmittance[3], 0.2158605f, 1e-4);  // sRGB 128 decoded to linear
 }
 
+// Several Beams are cells (docs/cells.md); the brightest is the profile's own beam.
 TEST(GdtfSynthetic, PicksTheBrightestOfSeveralBeamsAndWarns) {
   TempDir dir("multi");
   const std::string extra = R"(
@@ -186,9 +187,11 @@ TEST(GdtfSynthetic, PicksTheBrightestOfSeveralBeamsAndWarns) {
   EXPECT_EQ(g->beamCount, 3);
   EXPECT_TRUE(near3(g->profile->lensOffset, {0.2f, -0.3f, 0.0f}));
   EXPECT_FLOAT_EQ(g->profile->fieldAngleDeg, 10.0f);
-  bool warned = false;
-  for (const auto& w : g->warnings) warned |= w.find("3 Beam geometries") != std::string::npos;
+  bool warned = false;  // the Glow beam lights nothing: two cells
+  for (const auto& w : g->warnings) warned |= w.find("2 Beam geometries: imported as 2 cells") != std::string::npos;
   EXPECT_TRUE(warned);
+  ASSERT_EQ(g->profile->cells.size(), 2u);
+  EXPECT_EQ(g->profile->cells[1].name, "Cell2");
 }
 
 TEST(GdtfSynthetic, RefusesAFixtureWithoutLight) {

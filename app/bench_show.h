@@ -1,0 +1,19 @@
+// `haze bench --show FILE [--cue N] [--camera NAME]`: a show's cue as the bench frame, so that rigs (a multi-cell
+// wash against separate fixtures, docs/cells.md) can be timed like the synthetic stage.
+#pragma once
+
+#include <string>
+
+#include "fixtures/core/result.h"
+#include "renderer/scene/frame_state.h"
+#include "renderer/scene/venue.h"
+
+namespace haze {
+
+// The show's venue (an empty stage when it names none) and the full state of cue `cue` of its
+// first cue list ("" = the first cue), seen from camera `camera` ("" = the show's first); mergeCells
+// as FrameOptions::mergeCells. fixtures: how many the show has.
+Status loadBenchShow(const std::string& file, const std::string& cue, const std::string& camera, bool mergeCells,
+                     Venue& venue, FrameState& frame, int& fixtures);
+
+}  // namespace haze
