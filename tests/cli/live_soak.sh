@@ -17,17 +17,7 @@ fail() { echo "FAIL: $*"; echo "--- haze stderr:"; cat "$tmp/err" 2>/dev/null; e
 command -v node >/dev/null || fail "node is not installed"
 
 # The demo's twelve fixtures, spread over universes 1-8 (its venue and profiles by absolute path).
-python3 - "$root/examples/demo/demo.haze.json" "$tmp/soak.haze.json" <<'PY'
-import json, os, sys
-src, dst = sys.argv[1], sys.argv[2]
-show = json.load(open(src))
-here = os.path.dirname(os.path.abspath(src))
-show['venue']['gltf'] = os.path.join(here, show['venue']['gltf'])
-show['profiles'] = {k: os.path.join(here, v) for k, v in show['profiles'].items()}
-for i, f in enumerate(show['fixtures']):
-    f['patch'] = {'universe': i % 8 + 1, 'address': 1 + 40 * (i // 8)}
-json.dump(show, open(dst, 'w'), indent=1)
-PY
+python3 "$root/tests/show_copy.py" "$root/examples/demo/demo.haze.json" "$tmp/soak.haze.json" --spread-universes 8
 
 "$haze" live "$tmp/soak.haze.json" --sacn --sacn-port 0 --no-preview --duration $((seconds + 5)) 2>"$tmp/err" &
 hpid=$!

@@ -16,15 +16,7 @@ pid=""
 trap 'kill $pid 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT
 . "$root/tests/gui/gui_session.bash"
 show=$tmp/kill.haze.json
-python3 - "$root/examples/demo/demo.haze.json" "$tmp/old.json" <<'PY'
-import json, os, sys
-src, dst = sys.argv[1], sys.argv[2]
-show = json.load(open(src))
-here = os.path.dirname(os.path.abspath(src))
-show['venue']['gltf'] = os.path.join(here, show['venue']['gltf'])
-show['profiles'] = {k: os.path.join(here, v) for k, v in show['profiles'].items()}
-json.dump(show, open(dst, 'w'), separators=(',', ':'))
-PY
+python3 "$root/tests/show_copy.py" "$root/examples/demo/demo.haze.json" "$tmp/old.json" --compact
 sum() { sha256sum "$1" | cut -d' ' -f1; }
 old=$(sum "$tmp/old.json")
 args=(--width 320 --height 180 --quality draft)

@@ -12,16 +12,7 @@ out=$(mktemp -d)
 trap 'kill $XVFB_PID 2>/dev/null; rm -rf "$out"' EXIT
 demo=$root/examples/demo/demo.haze.json
 # The copy without haze lives in the temp folder; its venue and profiles point back to the demo's.
-python3 - "$demo" "$out/clear.haze.json" <<'PY'
-import json, os, sys
-src, dst = sys.argv[1], sys.argv[2]
-show = json.load(open(src))
-here = os.path.dirname(os.path.abspath(src))
-show['venue']['gltf'] = os.path.join(here, show['venue']['gltf'])
-show['profiles'] = {k: os.path.join(here, v) for k, v in show['profiles'].items()}
-show['atmosphere']['scattering'] = 0.0
-json.dump(show, open(dst, 'w'), indent=2)
-PY
+python3 "$root/tests/show_copy.py" "$demo" "$out/clear.haze.json" --scattering 0
 args=(--width 640 --height 360 --frames 3 --cue 2 --exposure-mode manual --exposure 0)
 "$haze" open "$demo" "${args[@]}" --screenshot "$out/shot.png"
 "$haze" open "$out/clear.haze.json" "${args[@]}" --screenshot "$out/clear.png"
