@@ -7,24 +7,12 @@
 # image's summed light (the three beams have the same photometry and nearly the same place; the
 # camera sees only the beams in the haze, with no surface's colour in view).
 # usage: bash cells_live.sh HAZE_BINARY REPO_ROOT
-set -u
-HAZE=$1
-ROOT=$(cd "$2" && pwd)
+source "$(dirname "$0")/live_session.bash" "$@"
+need_node
 DATA="$ROOT/../shared/data"
-TMP=$(mktemp -d)
-HAZE_PID=""
-SEND_PID=""
-cleanup() {
-  [ -n "$SEND_PID" ] && kill "$SEND_PID" 2>/dev/null
-  [ -n "$HAZE_PID" ] && kill "$HAZE_PID" 2>/dev/null
-  rm -rf "$TMP"
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; [ -f "$TMP/err" ] && { echo "--- haze stderr:"; cat "$TMP/err"; }; exit 1; }
-command -v node >/dev/null || fail "node is not installed"
 
 python3 "$ROOT/tests/data/gdtf/make_gdtf.py" "$ROOT/tests/data/gdtf/hex7_wash.xml" "$TMP/hex7.gdtf" || fail "cannot zip the test GDTF"
-"$HAZE" fixture info "$TMP/hex7.gdtf" --json >"$TMP/info.json" 2>"$TMP/err" || fail "fixture info failed"
+"$HAZE" fixture info "$TMP/hex7.gdtf" --json >"$TMP/info.json" 2>"$TMP/info_err" || fail "fixture info failed: $(cat "$TMP/info_err")"
 node -e '
 const f = JSON.parse(require("fs").readFileSync(process.argv[1], "utf8"));
 const bad = [];
@@ -51,27 +39,12 @@ cat >"$TMP/show.haze.json" <<JSON
   "cue_lists": []
 }
 JSON
-"$HAZE" live "$TMP/show.haze.json" --artnet --artnet-port 0 --duration 4 --state-json "$TMP/state.json" \
-  --render "$TMP/live.pfm" --width 160 --height 90 --quality draft 2>"$TMP/err" &
-HAZE_PID=$!
-PORT=""
-for _ in $(seq 600); do
-  PORT=$(sed -n 's/^haze live: Art-Net on 127\.0\.0\.1:\([0-9][0-9]*\) .*$/\1/p' "$TMP/err")
-  [ -n "$PORT" ] && break
-  kill -0 "$HAZE_PID" 2>/dev/null || fail "haze live exited before listening"
-  sleep 0.1
-done
-[ -n "$PORT" ] || fail "haze live did not report its Art-Net port"
+live_start Art-Net "$TMP/show.haze.json" --artnet --artnet-port 0 --duration 4 --state-json "$TMP/state.json" \
+  --render "$TMP/live.pfm" --width 160 --height 90 --quality draft
 # Pan, tilt 0x8000; master 255; cell 1 red, cell 2 green at 128, cell 3 dark, cell 4 blue.
 DMX='{"0":[128,0,128,0,255, 255,255,0,0, 128,0,255,0, 0,0,0,0, 255,0,0,255, 0,0,0,0, 0,0,0,0, 0,0,0,0]}'
-(cd "$ROOT/tests/node" && node send_artnet.js "$PORT" 15 "$DMX" >"$TMP/sent" 2>"$TMP/send_err") &
-SEND_PID=$!
-wait "$SEND_PID" || { cat "$TMP/send_err"; fail "send_artnet.js failed"; }
-SEND_PID=""
-wait "$HAZE_PID"
-STATUS=$?
-HAZE_PID=""
-[ "$STATUS" -eq 0 ] || fail "haze live exited with $STATUS"
+live_send_all send_artnet.js "$PORT" 15 "$DMX"
+live_wait_ok
 node -e '
 const s = JSON.parse(require("fs").readFileSync(process.argv[1], "utf8"))["1"];
 const want = [[1, [1, 0, 0]], [128 / 255, [0, 1, 0]], [0, null], [1, [0, 0, 1]], [0, null], [0, null], [0, null]];

@@ -7,30 +7,12 @@
 # bounded (resident size measured before and after). The longest pass of its receive loop
 # during the flood is printed (a measurement, not a pass/fail limit: this machine is shared).
 # usage: bash live_flood.sh HAZE_BINARY REPO_ROOT
-set -u
-HAZE=$1
-ROOT=$2
-TMP=$(mktemp -d)
-HAZE_PID=""
-cleanup() {
-  [ -n "$HAZE_PID" ] && kill "$HAZE_PID" 2>/dev/null
-  rm -rf "$TMP"
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; echo "--- haze stderr:"; cat "$TMP/err" 2>/dev/null; exit 1; }
-
-"$HAZE" live "$ROOT/tests/data/live/cues.haze.json" --artnet-port 0 --sacn-port 0 --osc 0 --timecode \
-  2>"$TMP/err" &
-HAZE_PID=$!
-for _ in $(seq 600); do
-  grep -q "^haze live: OSC on" "$TMP/err" && break
-  kill -0 "$HAZE_PID" 2>/dev/null || fail "haze live exited before listening"
-  sleep 0.1
-done
-ART=$(sed -n 's/^haze live: Art-Net on 127\.0\.0\.1:\([0-9][0-9]*\) .*$/\1/p' "$TMP/err")
-SACN=$(sed -n 's/^haze live: sACN on 127\.0\.0\.1:\([0-9][0-9]*\)$/\1/p' "$TMP/err")
-OSC=$(sed -n 's/^haze live: OSC on 127\.0\.0\.1:\([0-9][0-9]*\)$/\1/p' "$TMP/err")
-[ -n "$ART" ] && [ -n "$SACN" ] && [ -n "$OSC" ] || fail "haze live did not report its three ports"
+source "$(dirname "$0")/live_session.bash" "$@"
+live_start OSC "$ROOT/tests/data/live/cues.haze.json" --artnet-port 0 --sacn-port 0 --osc 0 --timecode
+ART=$(live_port Art-Net)
+SACN=$(live_port sACN)
+OSC=$PORT
+[ -n "$ART" ] && [ -n "$SACN" ] || fail "haze live did not report its Art-Net and sACN ports"
 rss() { sed -n 's/^VmRSS:[[:space:]]*\([0-9][0-9]*\) kB$/\1/p' "/proc/$HAZE_PID/status"; }
 RSS_BEFORE=$(rss)
 [ -n "$RSS_BEFORE" ] || fail "cannot read haze's resident size from /proc/$HAZE_PID/status" 
@@ -101,16 +83,16 @@ STATUS=$?
 HAZE_PID=""
 [ "$STATUS" -eq 0 ] || fail "haze live exited with $STATUS after the flood"
 
-count() { sed -n "s/^haze live: malformed $1: \([0-9]*\)$/\1/p" "$TMP/err"; }
+count() { sed -n "s/^haze live: malformed $1: \([0-9]*\)$/\1/p" "$HAZE_ERR"; }
 for reason in artnet.timecode_bad_time artnet.truncated sacn.bad_sync_address sacn.bad_discovery_page \
               sacn.bad_discovery_universe sacn.bad_priority; do
   n=$(count "$reason")
   [ -n "$n" ] && [ "$n" -gt 0 ] || fail "no rejected packets counted as $reason"
 done
-grep -q "haze live: answered [0-9]* ArtPolls" "$TMP/err" || fail "the ArtPolls were not answered"
-grep -Eq "haze live: OSC: 1 commands done, [0-9]{3,} refused" "$TMP/err" || fail "the malformed OSC messages were not refused and counted"
-grep -E "^haze live: [0-9.]+ s: |^haze live: OSC: |^haze live: answered " "$TMP/err"
+grep -q "haze live: answered [0-9]* ArtPolls" "$HAZE_ERR" || fail "the ArtPolls were not answered"
+grep -Eq "haze live: OSC: 1 commands done, [0-9]{3,} refused" "$HAZE_ERR" || fail "the malformed OSC messages were not refused and counted"
+grep -E "^haze live: [0-9.]+ s: |^haze live: OSC: |^haze live: answered " "$HAZE_ERR"
 GROWTH=$(( RSS_AFTER - RSS_BEFORE ))
-echo "resident size: $RSS_BEFORE kB before, $RSS_AFTER kB after the flood; $(grep 'longest pass' "$TMP/err" | sed 's/^haze live: //')"
+echo "resident size: $RSS_BEFORE kB before, $RSS_AFTER kB after the flood; $(grep 'longest pass' "$HAZE_ERR" | sed 's/^haze live: //')"
 [ "$GROWTH" -lt 65536 ] || fail "haze grew by $GROWTH kB during the flood"
 echo "PASS live_flood"

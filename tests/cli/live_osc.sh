@@ -5,40 +5,16 @@
 # and in the final state (cues of tests/data/live/cues.haze.json have fades of 0); malformed
 # messages are refused with a reply and counted.
 # usage: bash live_osc.sh HAZE_BINARY REPO_ROOT
-set -u
-HAZE=$1
-ROOT=$2
-TMP=$(mktemp -d)
-HAZE_PID=""
-cleanup() {
-  [ -n "$HAZE_PID" ] && kill "$HAZE_PID" 2>/dev/null
-  rm -rf "$TMP"
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; echo "--- haze stderr:"; cat "$TMP/err" 2>/dev/null; exit 1; }
-
-if ! command -v oscsend >/dev/null; then
-  echo "SKIP: oscsend (Debian liblo-tools) is not installed; tools/install-deps.sh installs it"
-  exit 0
-fi
+source "$(dirname "$0")/live_session.bash" "$@"
+command -v oscsend >/dev/null || fail "oscsend (Debian liblo-tools) is not installed; tools/install-deps.sh installs it"
 
 # OSC on the Art-Net port would share it (SO_REUSEPORT) and split the datagrams: refused.
-if "$HAZE" live "$ROOT/tests/data/live/cues.haze.json" --osc 6454 --duration 1 2>"$TMP/err"; then
+live_run "$ROOT/tests/data/live/cues.haze.json" --osc 6454 --duration 1 &&
   fail "--osc on the Art-Net port was accepted"
-fi
-grep -q "expected a port of its own" "$TMP/err" || fail "no clear message for --osc on the Art-Net port"
+grep -q "expected a port of its own" "$HAZE_ERR" || fail "no clear message for --osc on the Art-Net port"
 
-"$HAZE" live "$ROOT/tests/data/live/cues.haze.json" --sacn --sacn-port 0 --osc 0 --movement instant \
-  --state-json "$TMP/state.json" 2>"$TMP/err" &
-HAZE_PID=$!
-PORT=""
-for _ in $(seq 600); do
-  PORT=$(sed -n 's/^haze live: OSC on 127\.0\.0\.1:\([0-9][0-9]*\)$/\1/p' "$TMP/err")
-  [ -n "$PORT" ] && break
-  kill -0 "$HAZE_PID" 2>/dev/null || fail "haze live exited before listening"
-  sleep 0.1
-done
-[ -n "$PORT" ] || fail "haze live did not report its OSC port"
+live_start OSC "$ROOT/tests/data/live/cues.haze.json" --sacn --sacn-port 0 --osc 0 --movement instant \
+  --state-json "$TMP/state.json"
 
 # Each command waits for haze to log it, so the order on stage is the order sent.
 send() {
@@ -46,7 +22,7 @@ send() {
   shift
   oscsend 127.0.0.1 "$PORT" "$@" || fail "oscsend $* failed"
   for _ in $(seq 300); do
-    grep -q "$want" "$TMP/err" && return 0
+    grep -q "$want" "$HAZE_ERR" && return 0
     sleep 0.05
   done
   fail "haze did not log '$want' after oscsend $*"
@@ -87,25 +63,11 @@ got = ask(b'/haze/go\0\0\0')  # unpadded: not OSC
 assert got[0] == '/haze/error' and 'well-formed' in got[3], got
 PY
 
-kill -INT "$HAZE_PID"
-wait "$HAZE_PID"
-STATUS=$?
-HAZE_PID=""
-[ "$STATUS" -eq 0 ] || fail "haze live exited with $STATUS"
-grep -q 'haze live: OSC: 7 commands done, 3 refused' "$TMP/err" || fail "the OSC counts are not 7 done, 3 refused"
+live_stop_ok
+grep -q 'haze live: OSC: 7 commands done, 3 refused' "$HAZE_ERR" || fail "the OSC counts are not 7 done, 3 refused"
 
 # Cue 3 tracks cue 1's par (red at full) and sets fixture 1 to 0.6 at pan 90; fixture 2 is
 # the programmer's: 0.5, green with a little blue.
-node -e '
-const s = JSON.parse(require("fs").readFileSync(process.argv[1], "utf8"));
-const want = {"1": {intensity: 0.6, pan: 90}, "2": {intensity: 0.5, color: [0, 1, 0.25]}, "3": {intensity: 1, color: [1, 0, 0]}};
-let bad = 0;
-for (const [id, attrs] of Object.entries(want))
-  for (const [k, v] of Object.entries(attrs)) {
-    const got = s[id][k];
-    const ok = Array.isArray(v) ? v.every((x, i) => Math.abs(got[i] - x) < 1e-6) : Math.abs(got - v) < 1e-6;
-    if (!ok) { console.error("fixture " + id + " " + k + ": got " + JSON.stringify(got) + ", want " + JSON.stringify(v)); bad++; }
-  }
-process.exit(bad ? 1 : 0);
-' "$TMP/state.json" || fail "fixture states differ from the cues and the programmer"
+expect_state "$TMP/state.json" '{"1": {"intensity": 0.6, "pan": 90}, "2": {"intensity": 0.5, "color": [0, 1, 0.25]},
+  "3": {"intensity": 1, "color": [1, 0, 0]}}' 1e-6 || fail "fixture states differ from the cues and the programmer"
 echo "PASS live_osc"

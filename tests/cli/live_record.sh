@@ -6,22 +6,8 @@
 # as .bak; a show edited on disk during the run is refused and left as it was; a run in which
 # no DMX arrived records nothing.
 # usage: bash live_record.sh HAZE_BINARY REPO_ROOT
-set -u
-HAZE=$1
-ROOT=$2
-NODE_DIR="$ROOT/tests/node"
-TMP=$(mktemp -d)
-HAZE_PID=""
-SEND_PID=""
-cleanup() {
-  [ -n "$SEND_PID" ] && kill "$SEND_PID" 2>/dev/null
-  [ -n "$HAZE_PID" ] && kill "$HAZE_PID" 2>/dev/null
-  rm -rf "$TMP"
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; echo "--- haze stderr:"; cat "$TMP/err" 2>/dev/null; exit 1; }
-
-command -v node >/dev/null || fail "node is not installed"
+source "$(dirname "$0")/live_session.bash" "$@"
+need_node
 
 # The copy names the venue and profile by absolute paths, so it works from the temporary folder.
 SHOW="$TMP/show.haze.json"
@@ -34,53 +20,25 @@ s.profiles.spot = path.resolve(dir, s.profiles.spot);
 fs.writeFileSync(process.argv[2], JSON.stringify(s, null, 2) + "\n");
 ' "$ROOT/tests/data/live/cues.haze.json" "$SHOW"
 
-start_haze() {  # $@: extra options; sets HAZE_PID and PORT
-  "$HAZE" live "$SHOW" --sacn --sacn-port 0 "$@" 2>"$TMP/err" &
-  HAZE_PID=$!
-  PORT=""
-  for _ in $(seq 600); do
-    PORT=$(sed -n 's/^haze live: sACN on 127\.0\.0\.1:\([0-9][0-9]*\)$/\1/p' "$TMP/err")
-    [ -n "$PORT" ] && break
-    kill -0 "$HAZE_PID" 2>/dev/null || fail "haze live exited before listening"
-    sleep 0.1
-  done
-  [ -n "$PORT" ] || fail "haze live did not report its sACN port"
-}
+start_haze() { live_start sACN "$SHOW" --sacn --sacn-port 0 "$@"; }
 send_look() {
   # Fixture 1: dimmer full, pan 0xC000; fixture 2: dimmer 51 (0.2).
-  (cd "$NODE_DIR" && node send_sacn.js "$PORT" 40 \
-    '[{"universe":1,"priority":100,"cid":1,"name":"desk","slots":{"1":255,"2":192,"3":0,"11":51}}]' \
-    >"$TMP/sent" 2>"$TMP/send_err") &
-  SEND_PID=$!
-  for _ in $(seq 600); do
-    grep -q ready "$TMP/sent" 2>/dev/null && break
-    kill -0 "$SEND_PID" 2>/dev/null || { cat "$TMP/send_err"; fail "send_sacn.js exited early"; }
-    sleep 0.1
-  done
-  grep -q ready "$TMP/sent" || fail "send_sacn.js never got ready"
-}
-stop_haze() {
-  kill -INT "$HAZE_PID"
-  wait "$HAZE_PID"
-  STATUS=$?
-  HAZE_PID=""
-  kill "$SEND_PID" 2>/dev/null
-  wait "$SEND_PID" 2>/dev/null
-  SEND_PID=""
+  live_send_ready send_sacn.js "$PORT" 40 \
+    '[{"universe":1,"priority":100,"cid":1,"name":"desk","slots":{"1":255,"2":192,"3":0,"11":51}}]'
 }
 
 # 0. A cue number that is not one is refused before anything runs.
-"$HAZE" live "$SHOW" --sacn --sacn-port 0 --duration 0.2 --record-cue 1.2.3 2>"$TMP/err" &&
+live_run "$SHOW" --sacn --sacn-port 0 --duration 0.2 --record-cue 1.2.3 &&
   fail "--record-cue 1.2.3 was accepted"
-grep -q "is not a cue number" "$TMP/err" || fail "no clear message for a bad --record-cue"
+grep -q "is not a cue number" "$HAZE_ERR" || fail "no clear message for a bad --record-cue"
 
 # 1. Record cue 10.
 cp "$SHOW" "$TMP/before.json"
 start_haze --record-cue 10 --label "from the desk"
 send_look
-stop_haze
+live_stop
 [ "$STATUS" -eq 0 ] || fail "haze live --record-cue exited with $STATUS"
-grep -q "haze live: recorded cue 10 from 2 fixtures" "$TMP/err" || fail "no line saying cue 10 was recorded"
+grep -q "haze live: recorded cue 10 from 2 fixtures" "$HAZE_ERR" || fail "no line saying cue 10 was recorded"
 cmp -s "$TMP/before.json" "$SHOW.bak" || fail "the previous show was not kept as .bak"
 "$HAZE" validate "$SHOW" >/dev/null 2>"$TMP/validate" || { cat "$TMP/validate"; fail "the saved show does not validate"; }
 "$HAZE" state "$SHOW" --cue 10 --json >"$TMP/cue10.json" 2>"$TMP/state_err" || { cat "$TMP/state_err"; fail "haze state --cue 10 failed"; }
@@ -112,14 +70,14 @@ start_haze --record-cue 11
 send_look
 node -e 'const fs = require("fs"); const s = JSON.parse(fs.readFileSync(process.argv[1])); s.cameras[0].fov_y = 55; fs.writeFileSync(process.argv[1], JSON.stringify(s, null, 1));' "$SHOW"
 cp "$SHOW" "$TMP/edited.json"
-stop_haze
+live_stop
 [ "$STATUS" -ne 0 ] || fail "recording over a show changed on disk succeeded"
-grep -q "changed on disk" "$TMP/err" || fail "no clear message about the show changing on disk"
+grep -q "changed on disk" "$HAZE_ERR" || fail "no clear message about the show changing on disk"
 cmp -s "$TMP/edited.json" "$SHOW" || fail "the show edited on disk was overwritten"
 
 # 3. No DMX at all: nothing is recorded and the show is untouched.
-"$HAZE" live "$SHOW" --sacn --sacn-port 0 --duration 0.5 --record-cue 12 2>"$TMP/err" &&
+live_run "$SHOW" --sacn --sacn-port 0 --duration 0.5 --record-cue 12 &&
   fail "a record without DMX succeeded"
-grep -q "no fixture received DMX; nothing recorded" "$TMP/err" || fail "no clear message for a record without DMX"
+grep -q "no fixture received DMX; nothing recorded" "$HAZE_ERR" || fail "no clear message for a record without DMX"
 cmp -s "$TMP/edited.json" "$SHOW" || fail "a record without DMX changed the show"
 echo "PASS live_record"

@@ -6,52 +6,34 @@
 # as late or malformed, and haze's resident memory stays flat: after the first fifth of the run
 # the largest sample is within 5 % of the smallest. Prints the figures.
 # usage: live_soak.sh HAZE REPO [SECONDS]
-set -u
-haze=$1
-root=$2
 seconds=${3:-30}
-tmp=$(mktemp -d)
-hpid=""; spid=""
-trap 'kill $spid $hpid 2>/dev/null; rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; echo "--- haze stderr:"; cat "$tmp/err" 2>/dev/null; exit 1; }
-command -v node >/dev/null || fail "node is not installed"
+source "$(dirname "$0")/live_session.bash" "$1" "$2"
+need_node
 
 # The demo's twelve fixtures, spread over universes 1-8 (its venue and profiles by absolute path).
-python3 "$root/tests/show_copy.py" "$root/examples/demo/demo.haze.json" "$tmp/soak.haze.json" --spread-universes 8
+python3 "$ROOT/tests/show_copy.py" "$ROOT/examples/demo/demo.haze.json" "$TMP/soak.haze.json" --spread-universes 8
 
-"$haze" live "$tmp/soak.haze.json" --sacn --sacn-port 0 --no-preview --duration $((seconds + 5)) 2>"$tmp/err" &
-hpid=$!
-port=""
-for _ in $(seq 600); do
-  port=$(sed -n 's/^haze live: sACN on 127\.0\.0\.1:\([0-9][0-9]*\)$/\1/p' "$tmp/err")
-  [ -n "$port" ] && break
-  kill -0 $hpid 2>/dev/null || fail "haze live exited before listening"
-  sleep 0.1
-done
-[ -n "$port" ] || fail "haze live did not report its sACN port"
+live_start sACN "$TMP/soak.haze.json" --sacn --sacn-port 0 --no-preview --duration $((seconds + 5))
 
-node "$root/tests/node/soak_sacn.js" "$port" "$seconds" >"$tmp/sent" 2>"$tmp/senderr" &
-spid=$!
-: >"$tmp/rss"
-while kill -0 $spid 2>/dev/null; do
-  awk '/^VmRSS:/ { print $2 }' /proc/$hpid/status >>"$tmp/rss" 2>/dev/null
+live_sender soak_sacn.js "$PORT" "$seconds"
+: >"$TMP/rss"
+while kill -0 "$SEND_PID" 2>/dev/null; do
+  awk '/^VmRSS:/ { print $2 }' "/proc/$HAZE_PID/status" >>"$TMP/rss" 2>/dev/null
   sleep 1
 done
-wait $spid || fail "the sender failed: $(cat "$tmp/senderr")"
-spid=""
-wait $hpid; rc=$?
-hpid=""
-[ $rc -eq 0 ] || fail "haze live exited $rc"
+wait "$SEND_PID" || fail "the sender failed: $(cat "$SEND_ERR")"
+SEND_PID=""
+live_wait_ok
 
-sent=$(sed -n 's/.*"sent":\([0-9]*\).*/\1/p' "$tmp/sent")
-report=$(grep -E '^haze live: [0-9.]+ s: ' "$tmp/err")
+sent=$(sed -n 's/.*"sent":\([0-9]*\).*/\1/p' "$SEND_OUT")
+report=$(grep -E '^haze live: [0-9.]+ s: ' "$HAZE_ERR")
 num() { echo "$report" | sed -n "s/.* \([0-9][0-9]*\) $1.*/\1/p"; }
 received=$(num datagrams); malformed=$(num malformed); late=$(num late)
-samples=$(wc -l <"$tmp/rss")
-read -r lo hi < <(awk -v n="$samples" 'NR > n / 5 { if (!lo || $1 < lo) lo = $1; if ($1 > hi) hi = $1 } END { print lo, hi }' "$tmp/rss")
+samples=$(wc -l <"$TMP/rss")
+read -r lo hi < <(awk -v n="$samples" 'NR > n / 5 { if (!lo || $1 < lo) lo = $1; if ($1 > hi) hi = $1 } END { print lo, hi }' "$TMP/rss")
 echo "soak: ${seconds} s, $sent datagrams sent, $received received, $late late, $malformed malformed;" \
      "RSS after the first fifth $lo..$hi kB over $samples samples"
-grep '^haze live: source' "$tmp/err"
+grep '^haze live: source' "$HAZE_ERR"
 [ -n "$sent" ] && [ "$sent" -gt $((seconds * 44 * 8 * 9 / 10)) ] || fail "the sender sent $sent datagrams, short of 44 Hz on 8 universes"
 [ "$received" = "$sent" ] || fail "haze counted $received datagrams of the $sent sent"
 [ "$late" = 0 ] && [ "$malformed" = 0 ] || fail "$late late and $malformed malformed on a clean stream"

@@ -7,25 +7,13 @@
 # 2. `haze live`: a DMX jump of 180 degrees on a slow fixture (20 deg/s) has not arrived when haze
 #    stops, and has moved no further than its speed allows in the time haze ran.
 # usage: bash movement.sh HAZE_BINARY REPO_ROOT
-set -u
-HAZE=$1
-ROOT=$(cd "$2" && pwd)
+source "$(dirname "$0")/live_session.bash" "$@"
+need_node
 DATA="$ROOT/../shared/data"
-TMP=$(mktemp -d)
-HAZE_PID=""
-SEND_PID=""
-cleanup() {
-  [ -n "$SEND_PID" ] && kill "$SEND_PID" 2>/dev/null
-  [ -n "$HAZE_PID" ] && kill "$HAZE_PID" 2>/dev/null
-  rm -rf "$TMP"
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; [ -f "$TMP/err" ] && { echo "--- haze stderr:"; cat "$TMP/err"; }; exit 1; }
-command -v node >/dev/null || fail "node is not installed"
 
 GDTF="$DATA/gdtf/Clay Paky@Alpha Spot QWO 800@allWorking.gdtf"
 [ -f "$GDTF" ] || fail "missing $GDTF"
-"$HAZE" fixture info "$GDTF" --json >"$TMP/info.json" 2>"$TMP/err" || fail "fixture info failed"
+"$HAZE" fixture info "$GDTF" --json >"$TMP/info.json" 2>"$TMP/info_err" || fail "fixture info failed: $(cat "$TMP/info_err")"
 node -e '
 const f = JSON.parse(require("fs").readFileSync(process.argv[1], "utf8"));
 const p = f.movement.pan;
@@ -47,7 +35,7 @@ JSON
 pan() {  # pan 1 AT [ARGS...]: fixture 1's pan AT seconds after GO into cue 2
   local at=$1
   shift
-  "$HAZE" state "$TMP/show.haze.json" --cue 2 --at "$at" --json "$@" 2>"$TMP/err" |
+  "$HAZE" state "$TMP/show.haze.json" --cue 2 --at "$at" --json "$@" 2>"$TMP/state_err" |
     node -e 'let s="";process.stdin.on("data",d=>s+=d).on("end",()=>console.log(JSON.parse(s)["1"].pan))'
 }
 # The closed form: d = 180, v = 270, a = 1080; ramp v/a = 0.25 s, arrival T = d/v + v/a.
@@ -58,7 +46,7 @@ FRAME=$(node -e 'console.log(1 / 30)')
 before=$(node -e "console.log($T - $FRAME)")
 after=$(node -e "console.log($T + $FRAME)")
 for t in 0.1 0.2 0.5 0.8 "$before"; do
-  got=$(pan "$t") || fail "haze state --at $t failed"
+  got=$(pan "$t") || fail "haze state --at $t failed: $(cat "$TMP/state_err")"
   want=$(closed "$t")
   # Within 0.5 degrees of the closed form (the 1 ms step's measured error is under 0.1 degree).
   node -e "process.exit(Math.abs($got - $want) <= 0.5 ? 0 : 1)" || fail "pan at $t s is $got, closed form $want"
@@ -89,29 +77,12 @@ cat >"$TMP/live.haze.json" <<'JSON'
 JSON
 DURATION=5
 start=$(date +%s.%N)
-"$HAZE" live "$TMP/live.haze.json" --artnet --artnet-port 0 --duration $DURATION \
-  --state-json "$TMP/state.json" 2>"$TMP/err" &
-HAZE_PID=$!
-PORT=""
-for _ in $(seq 600); do
-  PORT=$(sed -n 's/^haze live: Art-Net on 127\.0\.0\.1:\([0-9][0-9]*\) .*$/\1/p' "$TMP/err")
-  [ -n "$PORT" ] && break
-  kill -0 "$HAZE_PID" 2>/dev/null || fail "haze live exited before listening"
-  sleep 0.1
-done
-[ -n "$PORT" ] || fail "haze live did not report its Art-Net port"
+live_start Art-Net "$TMP/live.haze.json" --artnet --artnet-port 0 --duration $DURATION --state-json "$TMP/state.json"
 # Pan 0x8000 is 0.004 degrees, 0xD555 is 180.0015.
-(cd "$ROOT/tests/node" && node send_artnet_jump.js "$PORT" 5 '{"0":[255,128,0]}' 40 '{"0":[255,213,85]}' \
-  >"$TMP/sent" 2>"$TMP/send_err") &
-SEND_PID=$!
-wait "$HAZE_PID"
-STATUS=$?
-HAZE_PID=""
+live_sender send_artnet_jump.js "$PORT" 5 '{"0":[255,128,0]}' 40 '{"0":[255,213,85]}'
+live_wait_ok
 end=$(date +%s.%N)
-kill "$SEND_PID" 2>/dev/null
-SEND_PID=""
-[ "$STATUS" -eq 0 ] || fail "haze live exited with $STATUS"
-grep -q jump "$TMP/sent" || fail "the sender never jumped: $(cat "$TMP/send_err")"
+grep -q jump "$SEND_OUT" || fail "the sender never jumped: $(cat "$SEND_ERR")"
 got=$(node -e 'console.log(JSON.parse(require("fs").readFileSync(process.argv[1], "utf8"))["1"].pan)' "$TMP/state.json")
 ran=$(node -e "console.log($end - $start)")
 # Moved (more than the 0.5 degrees 0.11 s of ramp give), not arrived, and no faster than 20 deg/s
