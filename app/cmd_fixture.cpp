@@ -34,6 +34,17 @@ void printText(const nlohmann::ordered_json& f) {
               << c["lens_offset"][2].get<double>() << "] m, field " << c["field_angle"].get<double>() << " deg, "
               << c["lumens"].get<double>() << " lm\n";
   }
+  {
+    const auto& b = f["body"];
+    std::cout << "  body (" << b["source"].get<std::string>() << "):";
+    for (const char* part : {"base", "yoke_left", "head"}) {
+      if (b[part].is_null()) continue;
+      const auto& size = b[part]["size"];
+      std::cout << " " << (std::string(part) == "yoke_left" ? "yoke arm" : part) << " " << size[0].get<double>() << " x "
+                << size[1].get<double>() << " x " << size[2].get<double>() << " m";
+    }
+    std::cout << "\n";
+  }
   // Beam optics beyond the gobo.
   if (!f["frost"].is_null()) std::cout << "  frost up to " << f["frost"]["max"].get<double>() << " deg\n";
   for (const auto& p : f["prisms"])

@@ -43,7 +43,8 @@ constexpr const char* kUsage =
     "gives the GO times: {\"go\": [{\"cue\": \"1\", \"at\": 0}, {\"cue\": \"2\", \"at\": 8.5}], \"end\": 20}.\n"
     "--progress reports progress on stderr even when it is not a terminal (it always is on one).\n"
     "--movement real|instant: pan, tilt and zoom at the fixtures' speeds (default) or at once (--at, --video).\n"
-    "--cells separate|merged: one beam per cell (default), or a fixture's alike cells as one beam.\n";
+    "--cells separate|merged: one beam per cell (default), or a fixture's alike cells as one beam.\n"
+    "--no-bodies leaves the fixtures' housings out (docs/fixtures.md, \"Bodies\").\n";
 
 std::string secondsText(double s) {
   char text[32];
@@ -58,7 +59,7 @@ int runRender(const Args& args) {
                                                        cells = "separate";
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
-  bool allCues = false, progress = false, caption = false;
+  bool allCues = false, progress = false, caption = false, noBodies = false;
   std::string video, from, to, codec = "libx264", timelineFile;
   double hold = 2.0, duration = 0.0;
   int fps = 25;
@@ -87,6 +88,7 @@ int runRender(const Args& args) {
       .text("--codec", codec, "an FFmpeg encoder name")
       .flag("--progress", progress)
       .flag("--caption", caption)
+      .flag("--no-bodies", noBodies)
       .text("--timeline", timelineFile, "a JSON file of GO times")
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
@@ -111,7 +113,7 @@ int runRender(const Args& args) {
 
   RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
                            .quality = *q, .exposureMode = parseExposureMode(exposureMode),
-                           .bloom = static_cast<float>(bloom), .mergeCells = cells == "merged",
+                           .bloom = static_cast<float>(bloom), .mergeCells = cells == "merged", .bodies = !noBodies,
                            .exrPixel = *parseExrPixel(exrPixel), .progress = progress};
   if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
   auto session = RenderSession::open(*show, options);

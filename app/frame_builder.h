@@ -24,6 +24,8 @@ struct FrameOptions {
   // Cells of one fixture that share a light map drawn as one beam (docs/cells.md, "Cost").
   bool mergeCells = false;
   std::optional<FrameTime> time;  // none: a still
+  // The fixtures' housings (docs/fixtures.md, "Bodies"), dark fixtures' too.
+  bool bodies = true;
 };
 
 // cameraName "" = the show's first camera (or a default view of the stage when it has none).

@@ -68,7 +68,7 @@ Result<std::unique_ptr<RenderSession>> RenderSession::open(const Show& show, con
 }
 
 Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const StageState& state, bool reportRows) {
-  auto frame = buildFrame(show, profiles, state, options_.camera, FrameOptions{.mergeCells = options_.mergeCells});
+  auto frame = buildFrame(show, profiles, state, options_.camera, FrameOptions{.mergeCells = options_.mergeCells, .bodies = options_.bodies});
   if (!frame) return frame.error();
   referenceImage_.reset();
   if (options_.quality == Quality::Reference) {

@@ -12,6 +12,7 @@
 #include "renderer/beam_pass.h"
 #include "renderer/beam_resources.h"
 #include "renderer/gl/program.h"
+#include "renderer/gpu_bodies.h"
 #include "renderer/gpu_venue.h"
 #include "renderer/light_tiles.h"
 #include "renderer/scene/camera_basis.h"
@@ -50,6 +51,7 @@ std::string fixtureList(std::vector<int> ids) {
 
 struct Renderer::Impl {
   GpuVenue venue;
+  GpuBodies bodies;
   BeamResources beams;
   gl::Program shadowProgram, surfaceProgram, lensProgram, postProgram, bloomPostProgram;
   gl::Texture radiance, depth, display;
@@ -197,6 +199,11 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   m.venue.bind();
   m.venue.drawAll();
+  m.bodies.update(frame.bodies);
+  if (!m.bodies.empty()) {
+    m.bodies.bind();
+    m.bodies.drawAll();
+  }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
@@ -229,6 +236,18 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     if (mat.emissiveTexture >= 0)
       glBindTextureUnit(HAZE_UNIT_EMISSIVE_TEXTURE, m.venue.texture(mat.emissiveTexture).id());
     m.venue.draw(d);
+  }
+  if (!m.bodies.empty()) {
+    const glm::vec3 none(0.0f);
+    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, 0);
+    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, 0);
+    glProgramUniform3fv(prog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(none));
+    m.bodies.bind();
+    for (const GpuBodies::Draw& d : m.bodies.draws()) {
+      const glm::vec4 albedo(d.albedo, 1.0f);
+      glProgramUniform4fv(prog, HAZE_LOC_SURFACE_BASE_COLOR, 1, glm::value_ptr(albedo));
+      m.bodies.draw(d);
+    }
   }
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);

@@ -69,6 +69,7 @@ struct Gui {
   StageState stage;  // what is on stage this frame (playback + programmer, or live)
   // Heads at the fixtures' own speeds (docs/movement.md); View > Real movement turns it off.
   bool realMovement = true;
+  bool showBodies = true;  // View > Fixture bodies (docs/fixtures.md, "Bodies")
   std::unique_ptr<MovementFollower> heads;
   const ShowDocument* headsDoc = nullptr;  // the document `heads` follows
 

@@ -257,11 +257,13 @@ struct ChangeWatch {
   Orbit orbit{};
   float fovDeg = 0.0f;
   std::uint64_t revision = 0;
+  bool bodies = true;
 
   bool changing(const Gui& gui) {
     const bool moving = gui.heads && !gui.heads->settled();
     const bool changed = gui.live || gui.doc->fading(gui.nowS) || moving || !(gui.orbit == orbit) || gui.fovYDeg != fovDeg ||
-                         gui.doc->revision() != revision;
+                         gui.doc->revision() != revision || gui.showBodies != bodies;
+    bodies = gui.showBodies;
     orbit = gui.orbit;
     fovDeg = gui.fovYDeg;
     revision = gui.doc->revision();
@@ -286,6 +288,7 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   const bool flash = flashing(gui.stage);
   const double exposureS = std::clamp(gui.frameMs / 1000.0, 1.0 / 120.0, 0.1);
   FrameOptions frameOptions;
+  frameOptions.bodies = gui.showBodies;
   if (flash) frameOptions.time = FrameTime{gui.nowS, exposureS};
   auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "", frameOptions);
   if (!frameState) return frameState.error();

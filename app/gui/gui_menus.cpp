@@ -158,6 +158,7 @@ void drawMenuBar(Gui& gui) {
     ImGui::Separator();
     // docs/movement.md: off, heads jump to every value at once.
     ImGui::MenuItem("Real movement speeds", nullptr, &gui.realMovement);
+    ImGui::MenuItem("Fixture bodies", nullptr, &gui.showBodies);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

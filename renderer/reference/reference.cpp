@@ -162,40 +162,58 @@ glm::vec3 inScatterOneBeam(const Bvh& bvh, const MediumState& medium, const Acti
   return sum * static_cast<float>(medium.scattering * dphi / dist);
 }
 
-glm::vec3 surfaceRadiance(const Bvh& bvh, const FrameState& frame,
-                          const std::vector<ActiveBeam>& beams, const RayHit& hit,
-                          const glm::vec3& v, const ReferenceOptions& o) {
-  const SurfacePoint s = bvh.surfaceAt(hit);
-  const Venue& venue = bvh.venue();
+// L_surf at a point of a surface with geometric normal ng and shading normal n (both unit).
+glm::vec3 shadeSurface(const Bvh& bvh, const FrameState& frame, const std::vector<ActiveBeam>& beams,
+                       const glm::vec3& position, glm::vec3 ng, glm::vec3 n, const glm::vec3& albedo,
+                       const glm::vec3& emission, const glm::vec3& v, const ReferenceOptions& o) {
   // Two-sided: both normals turned towards the eye.
-  const glm::vec3 ng = glm::dot(s.geometricNormal, v) > 0.0f ? -s.geometricNormal
-                                                               : s.geometricNormal;
-  const glm::vec3 n = glm::dot(s.shadingNormal, ng) < 0.0f ? -s.shadingNormal : s.shadingNormal;
-  const float maxAbs = std::max({std::fabs(s.positionM.x), std::fabs(s.positionM.y),
-                                 std::fabs(s.positionM.z)});
+  if (glm::dot(ng, v) > 0.0f) ng = -ng;
+  if (glm::dot(n, ng) < 0.0f) n = -n;
+  const float maxAbs = std::max({std::fabs(position.x), std::fabs(position.y), std::fabs(position.z)});
   // Lift the shadow ray's end off the surface by more than float rounding at this position.
-  const glm::vec3 lifted = s.positionM + ng * (1e-4f + 4e-6f * maxAbs);
+  const glm::vec3 lifted = position + ng * (1e-4f + 4e-6f * maxAbs);
   const float sigmaT = frame.medium.extinction();
 
   glm::vec3 direct(0.0f);
   for (const ActiveBeam& ab : beams) {
     const glm::vec3 lens = ab.beam->pose.lensPosition;
-    const glm::vec3 toLens = lens - s.positionM;
+    const glm::vec3 toLens = lens - position;
     if (!(glm::dot(ng, toLens) > 0.0f)) continue;  // the light is behind the surface's plane
     const float r = glm::length(toLens);
     if (!(r > 0.0f)) continue;
     const float cosine = glm::dot(n, toLens / r);
     if (!(cosine > 0.0f)) continue;
-    const glm::vec3 intensity = beamIntensityTowards(*ab.beam, s.positionM);
+    const glm::vec3 intensity = beamIntensityTowards(*ab.beam, position);
     if (intensity == glm::vec3(0.0f)) continue;
     const glm::vec3 d = lifted - lens;
     const float len = glm::length(d);
     if (len > 0.0f && !visibleFromLens(bvh, lens, d / len, len + kShadowEndGapM, o)) continue;
     direct += intensity * (cosine * std::exp(-sigmaT * r) / (r * r));
   }
-  const glm::vec3 albedo = venue.albedo(*s.primitive, s.uv);
-  return albedo / kPi * direct + albedo * frame.medium.ambient +
-         venue.emission(*s.primitive, s.uv);
+  return albedo / kPi * direct + albedo * frame.medium.ambient + emission;
+}
+
+glm::vec3 surfaceRadiance(const Bvh& bvh, const FrameState& frame,
+                          const std::vector<ActiveBeam>& beams, const RayHit& hit,
+                          const glm::vec3& v, const ReferenceOptions& o) {
+  const SurfacePoint s = bvh.surfaceAt(hit);
+  const Venue& venue = bvh.venue();
+  return shadeSurface(bvh, frame, beams, s.positionM, s.geometricNormal, s.shadingNormal,
+                      venue.albedo(*s.primitive, s.uv), venue.emission(*s.primitive, s.uv), v, o);
+}
+
+// The nearest fixture body on the ray before tMax (docs/rendering.md, "Fixture bodies").
+struct BodyHit {
+  const BodyBox* box = nullptr;
+  BoxHit hit;
+};
+BodyHit closestBody(const FrameState& frame, const glm::vec3& e, const glm::vec3& v, float tMax) {
+  BodyHit best;
+  for (const BodyBox& b : frame.bodies) {
+    const BoxHit h = intersectBox(b, e, v, best.box ? best.hit.tM : tMax);
+    if (h.hit) best = {&b, h};
+  }
+  return best;
 }
 
 struct LensHit {
@@ -246,6 +264,11 @@ PixelRadiance radiance(const Bvh& bvh, const FrameState& frame,
   const RayHit hit = bvh.closestHit(e, v, 0.0f, far);
   out.hitSurface = hit.hit();
   out.depthM = out.hitSurface ? hit.tM : far;
+  const BodyHit body = closestBody(frame, e, v, out.depthM);
+  if (body.box) {
+    out.hitSurface = true;
+    out.depthM = body.hit.tM;
+  }
   const LensHit lens = closestLens(frame, e, v, out.depthM);
   if (lens.beam) {
     out.hitSurface = false;
@@ -255,6 +278,10 @@ PixelRadiance radiance(const Bvh& bvh, const FrameState& frame,
   const float transmit = std::exp(-frame.medium.extinction() * out.depthM);
   if (out.hitLens) {
     out.surface = lensLuminance(*lens.beam, e) * transmit;
+  } else if (body.box) {
+    out.surface = shadeSurface(bvh, frame, beams, e + v * body.hit.tM, body.hit.normal, body.hit.normal,
+                               body.box->albedo, glm::vec3(0.0f), v, o) *
+                  transmit;
   } else if (out.hitSurface) {
     out.surface = surfaceRadiance(bvh, frame, beams, hit, v, o) * transmit;
   } else {

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "fixtures/beam_optics.h"
+#include "fixtures/body.h"
 #include "fixtures/pose.h"
 #include "shaders/interface.h"
 
@@ -54,6 +55,9 @@ struct FrameState {
   CameraState camera;
   MediumState medium;
   std::vector<BeamState> beams;
+  // The fixtures' housings (docs/rendering.md, "Fixture bodies"): seen by the camera and lit by
+  // the beams, but casting no shadow (shadow maps are cached per beam; bodies move with pan).
+  std::vector<BodyBox> bodies;
 };
 
 }  // namespace haze

@@ -57,7 +57,8 @@ check "$tmp/par.json" "$keys" \
   "f.modes[0].channels[4].attribute === 'zoom' && f.modes[0].channels[4].range[0] === 10 && f.modes[0].channels[4].range[1] === 50" \
   "f.modes[0].channels[5].name === 'Strobe' && f.modes[0].channels[5].attribute === 'none'" \
   "f.lumens > 500 && f.lumens < 5000" \
-  "f.lens_radius === 0.05 && f.lens_radius_source === 'default'"
+  "f.lens_radius === 0.05 && f.lens_radius_source === 'default'" \
+  "f.body.source === 'default' && f.body.base === null && f.body.head.size[0] === 0.16 && f.body.head.center[1] === 0.16"
 
 # SOURCES.md: Ansorg stage spot, axial, 37 gammas, peak ~42,000 cd, FWHM ~10 degrees.
 check "$data/photometry/ies/hydraapi/ies_34.ies" "$keys" \
@@ -74,7 +75,13 @@ check "$data/photometry/ldt/eulumdat-py/sample3.ldt" "$keys" \
 # GDTF goes through the same loadProfile (fixtures/gdtf.h): facts come out with the same keys.
 check "$data/gdtf/BlenderDMX@BeskydBeam@version10.gdtf" "$keys" \
   "f.name === 'BeskydBeam'" "f.manufacturer === 'BlenderDMX'" "f.peak_candela > 0 && f.lumens > 0" \
-  "f.lens_radius === 0.08 && f.lens_radius_source === 'gdtf'"
+  "f.lens_radius === 0.08 && f.lens_radius_source === 'gdtf'" \
+  "f.body.source === 'gdtf' && JSON.stringify(f.body.head.size) === '[0.224,0.244,0.186]' && f.body.base.size[1] === 0.13"
+
+# A body in the text form too.
+"$haze" fixture info "$data/gdtf/BlenderDMX@BeskydBeam@version10.gdtf" > "$tmp/out.txt" 2>&1 || fail "fixture info (text) failed"
+grep -q "^  body (gdtf): base 0.3 x 0.13 x 0.3 m yoke arm .* head 0.224 x 0.244 x 0.186 m$" "$tmp/out.txt" ||
+  fail "the text form does not show the body: $(grep body "$tmp/out.txt")"
 
 # A native lens_radius wins over the default.
 sed 's/"zoom"/"lens_radius": 0.07, "zoom"/' "$tmp/par.json" > "$tmp/par_lens.json"
