@@ -27,5 +27,21 @@ check "some pixels are lit" 'awk "\$1 > 1.0 { n++ } END { exit !(n > 10) }" "$tm
 # Two cues that differ visibly differ in their images.
 "$haze" render "$show" --cue 3 --width 64 --height 36 -o "$tmp/c3.pfm"
 check "cue 2 and cue 3 differ" '! cmp -s "$tmp/c2.pfm" "$tmp/c3.pfm"'
+# --no-bodies: the fixtures' housings leave the image, and nothing else does (they are a few
+# percent of the pixels: the rig's heads, at the top of the frame and on the deck).
+"$haze" render "$show" --cue 2 --width 64 --height 36 --no-bodies -o "$tmp/c2-nobodies.pfm"
+changed=$(python3 - "$tmp/c2.pfm" "$tmp/c2-nobodies.pfm" <<'PY'
+import struct, sys
+def floats(path):
+    data = open(path, "rb").read()
+    parts = data.split(b"\n", 3)
+    w, h = map(int, parts[1].split())
+    scale = float(parts[2])
+    return struct.unpack(("<" if scale < 0 else ">") + "%df" % (3 * w * h), parts[3][: 12 * w * h])
+a, b = floats(sys.argv[1]), floats(sys.argv[2])
+print(sum(1 for i in range(0, len(a), 3) if abs(a[i] - b[i]) > 1e-3 * max(b[i], 1e-3)) * 3 * 100 // len(a))
+PY
+)
+check "--no-bodies changes some pixels, under 10 % of them ($changed %)" '! cmp -s "$tmp/c2.pfm" "$tmp/c2-nobodies.pfm" && [ "$changed" -lt 10 ]'
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
