@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "shows/cue_number.h"
+#include "shows/palettes.h"
 
 namespace haze {
 
@@ -51,7 +52,8 @@ StageState trackedState(const Show& show, const ProfileSet& /*profiles*/, const 
   for (size_t i = 0; i <= cueIndex && i < list.cues.size(); ++i)
     for (const auto& [id, v] : list.cues[i].values) {
       auto it = s.find(id);
-      if (it != s.end()) overlayValues(it->second, v);  // values for unknown ids: validation reports them
+      // Palettes resolve here, as the cue plays, so a changed palette reaches every cue using it.
+      if (it != s.end()) overlayValues(it->second, resolveValues(show, id, v));  // unknown ids: validation reports them
     }
   return s;
 }

@@ -68,6 +68,15 @@ struct CellValues {
   bool operator==(const CellValues&) const = default;
 };
 
+// The palettes a cue's entry for one fixture refers to, one per kind (docs/show-format.md,
+// "Groups and palettes"); "" = none. Resolved when the cue plays, so a changed palette reaches
+// every cue that refers to it.
+struct PaletteRefs {
+  std::string all, position, color, beam;
+  bool empty() const { return all.empty() && position.empty() && color.empty() && beam.empty(); }
+  bool operator==(const PaletteRefs&) const = default;
+};
+
 // The attributes a cue sets for one fixture; unset ones track from earlier cues.
 struct CueValues {
   std::optional<float> intensity, panDeg, tiltDeg, zoomDeg, goboRotationDeg, iris;
@@ -79,7 +88,25 @@ struct CueValues {
   std::optional<std::string> prism;
   std::optional<BladeInsertions> blades;
   std::optional<Shutter> shutter;
+  PaletteRefs palettes;  // laid under the values above when the cue plays
   bool operator==(const CueValues&) const = default;
+};
+
+// A named, ordered selection of fixtures ("Spots SR"); the order is the order of a fan.
+struct GroupDef {
+  std::string name;
+  std::vector<int> fixtures;  // fixture ids, in the group's order
+};
+
+enum class PaletteKind { Position, Color, Beam, All };
+
+// A look many cues share: values per group (laid over one another in the order of Show::groups)
+// and per fixture (laid over those). A palette holds only its kind's attributes.
+struct PaletteDef {
+  std::string name;
+  PaletteKind kind = PaletteKind::All;
+  std::map<std::string, CueValues> groups;  // by group name
+  std::map<int, CueValues> fixtures;        // by fixture id
 };
 
 struct Cue {
@@ -112,19 +139,25 @@ struct FileStamp {
 };
 
 // The newest show format version this haze reads and writes (docs/show-format.md).
-inline constexpr int kShowFormatVersion = 1;
+// Version 2 added groups and palettes; a version-1 file is read as version 2 unchanged.
+inline constexpr int kShowFormatVersion = 2;
 
 struct Show {
   std::filesystem::path file;        // where it was loaded from (paths inside are relative to it)
   std::optional<FileStamp> stamp;    // the file as loaded or last saved; empty for a new show
+  int fileVersion = kShowFormatVersion;  // the format version the file had when read
   std::string venueGltf;             // relative to the show file; "" = no venue (an empty stage)
   AtmosphereDef atmosphere;
   std::vector<CameraDef> cameras;
   std::map<std::string, ProfileRef> profiles;
   std::vector<FixtureDef> fixtures;
+  std::vector<GroupDef> groups;
+  std::vector<PaletteDef> palettes;
   std::vector<CueList> cueLists;
 
   const FixtureDef* findFixture(int id) const;
+  const GroupDef* findGroup(const std::string& name) const;
+  const PaletteDef* findPalette(const std::string& name) const;
   const CueList* findCueList(const std::string& name) const;  // "" = the first list
   std::filesystem::path resolve(const std::string& relative) const;  // against file's folder
 };

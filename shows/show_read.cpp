@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "shows/cue_number.h"
+#include "shows/palettes.h"
 #include "shows/timecode.h"
 #include "shows/show_json.h"
 
@@ -461,35 +462,110 @@ void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues&
   }
 }
 
-void readValues(Reader& r, const json& vals, const std::string& vp, Cue& cue) {
+// "palettes": {"position": "Centre", "color": "Red", ...}: one palette name per kind.
+void readPaletteRefs(Reader& r, const json& j, const std::string& p, PaletteRefs& refs) {
+  if (!r.isObject(j, p, "palette names by kind")) return;
+  r.onlyKeys(j, p, {"all", "position", "color", "beam"});
+  r.stringMember(j, p, "all", false, "the name of an \"all\" palette", refs.all, true);
+  r.stringMember(j, p, "position", false, "the name of a position palette", refs.position, true);
+  r.stringMember(j, p, "color", false, "the name of a colour palette", refs.color, true);
+  r.stringMember(j, p, "beam", false, "the name of a beam palette", refs.beam, true);
+}
+
+// One fixture's (or group's) attribute values; `palettes` only where references are allowed
+// (cues: yes; palettes themselves: no, so references cannot form a cycle).
+void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValues& v, bool allowPalettes) {
+  if (allowPalettes)
+    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris", "frost", "prism",
+                      "prism_rotation", "blades", "blade_rotation", "shutter", "cells", "palettes"});
+  else
+    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris", "frost", "prism",
+                      "prism_rotation", "blades", "blade_rotation", "shutter", "cells"});
+  double x = 0;
+  auto num = [&](const char* key, double lo, double hi, const char* what, std::optional<float>& out) {
+    if (const json* j = r.member(a, p, key, false))
+      if (r.number(*j, p + "/" + key, lo, hi, what, x)) out = static_cast<float>(x);
+  };
+  num("intensity", 0.0, 1.0, "an intensity", v.intensity);
+  num("pan", -kInf, kInf, "a pan angle in degrees", v.panDeg);
+  num("tilt", -kInf, kInf, "a tilt angle in degrees", v.tiltDeg);
+  num("zoom", 0.1, 179.0, "a zoom (field angle) in degrees", v.zoomDeg);
+  num("gobo_rotation", -kInf, kInf, "a gobo rotation in degrees", v.goboRotationDeg);
+  num("iris", 0.0, 1.0, "an iris", v.iris);
+  glm::vec3 c{1.0f};
+  if (r.vec3Member(a, p, "color", false, 0.0, 1.0, "a colour component", c)) v.color = c;
+  std::string gobo;
+  if (r.stringMember(a, p, "gobo", false, "a gobo slot name", gobo, true)) v.gobo = gobo;
+  if (const json* cells = r.member(a, p, "cells", false)) readCellValues(r, *cells, p + "/cells", v);
+  readOpticsValues(r, a, p, v);
+  if (allowPalettes)
+    if (const json* refs = r.member(a, p, "palettes", false)) readPaletteRefs(r, *refs, p + "/palettes", v.palettes);
+}
+
+// Values keyed by fixture id, as cues and palettes hold them.
+void readFixtureValues(Reader& r, const json& vals, const std::string& vp, std::map<int, CueValues>& out,
+                       bool allowPalettes) {
   if (!r.isObject(vals, vp, "values by fixture id")) return;
   for (auto it = vals.begin(); it != vals.end(); ++it) {
     const std::string p = vp + "/" + pointerToken(it.key());
     int id = 0;
     if (!readFixtureKey(r, it.key(), p, id)) continue;
-    const json& a = *it;
-    if (!r.isObject(a, p, "attribute values")) continue;
-    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris", "frost", "prism",
-                      "prism_rotation", "blades", "blade_rotation", "shutter", "cells"});
+    if (!r.isObject(*it, p, "attribute values")) continue;
     CueValues v;
-    double x = 0;
-    auto num = [&](const char* key, double lo, double hi, const char* what, std::optional<float>& out) {
-      if (const json* j = r.member(a, p, key, false))
-        if (r.number(*j, p + "/" + key, lo, hi, what, x)) out = static_cast<float>(x);
-    };
-    num("intensity", 0.0, 1.0, "an intensity", v.intensity);
-    num("pan", -kInf, kInf, "a pan angle in degrees", v.panDeg);
-    num("tilt", -kInf, kInf, "a tilt angle in degrees", v.tiltDeg);
-    num("zoom", 0.1, 179.0, "a zoom (field angle) in degrees", v.zoomDeg);
-    num("gobo_rotation", -kInf, kInf, "a gobo rotation in degrees", v.goboRotationDeg);
-    num("iris", 0.0, 1.0, "an iris", v.iris);
-    glm::vec3 c{1.0f};
-    if (r.vec3Member(a, p, "color", false, 0.0, 1.0, "a colour component", c)) v.color = c;
-    std::string gobo;
-    if (r.stringMember(a, p, "gobo", false, "a gobo slot name", gobo, true)) v.gobo = gobo;
-    if (const json* cells = r.member(a, p, "cells", false)) readCellValues(r, *cells, p + "/cells", v);
-    readOpticsValues(r, a, p, v);
-    cue.values[id] = v;
+    readAttributeValues(r, *it, p, v, allowPalettes);
+    out[id] = v;
+  }
+}
+
+void readGroups(Reader& r, const json& root, Show& show) {
+  const json* groups = r.member(root, "", "groups", false);
+  if (!groups || !r.isArray(*groups, "/groups", "the groups")) return;
+  for (size_t i = 0; i < groups->size(); ++i) {
+    const json& g = (*groups)[i];
+    const std::string p = "/groups/" + std::to_string(i);
+    GroupDef d;
+    if (r.isObject(g, p, "a group")) {
+      r.onlyKeys(g, p, {"name", "fixtures"});
+      r.stringMember(g, p, "name", true, "the group's name", d.name, true);
+      if (const json* f = r.member(g, p, "fixtures", true); f && r.isArray(*f, p + "/fixtures", "the group's fixture ids"))
+        for (size_t k = 0; k < f->size(); ++k) {
+          int id = 0;
+          if (r.integer((*f)[k], p + "/fixtures/" + std::to_string(k), 1, INT_MAX, "a fixture id", id))
+            d.fixtures.push_back(id);
+        }
+    }
+    show.groups.push_back(std::move(d));  // kept when broken, so /groups/N keeps its index
+  }
+}
+
+void readPalettes(Reader& r, const json& root, Show& show) {
+  const json* pals = r.member(root, "", "palettes", false);
+  if (!pals || !r.isArray(*pals, "/palettes", "the palettes")) return;
+  for (size_t i = 0; i < pals->size(); ++i) {
+    const json& pj = (*pals)[i];
+    const std::string p = "/palettes/" + std::to_string(i);
+    PaletteDef d;
+    if (r.isObject(pj, p, "a palette")) {
+      r.onlyKeys(pj, p, {"name", "kind", "groups", "fixtures"});
+      r.stringMember(pj, p, "name", true, "the palette's name", d.name, true);
+      std::string kind;
+      if (r.stringMember(pj, p, "kind", true, "a palette kind", kind, true)) {
+        if (auto k = paletteKindFromName(kind))
+          d.kind = *k;
+        else
+          r.problem(p + "/kind", "unknown palette kind \"" + kind + "\"; expected position, color, beam or all");
+      }
+      if (const json* g = r.member(pj, p, "groups", false); g && r.isObject(*g, p + "/groups", "values by group name"))
+        for (auto it = g->begin(); it != g->end(); ++it) {
+          const std::string gp = p + "/groups/" + pointerToken(it.key());
+          if (!r.isObject(*it, gp, "attribute values")) continue;
+          CueValues v;
+          readAttributeValues(r, *it, gp, v, false);
+          d.groups[it.key()] = v;
+        }
+      if (const json* f = r.member(pj, p, "fixtures", false)) readFixtureValues(r, *f, p + "/fixtures", d.fixtures, false);
+    }
+    show.palettes.push_back(std::move(d));
   }
 }
 
@@ -537,7 +613,7 @@ void readCueLists(Reader& r, const json& root, Show& show) {
                                          "00..29), got \"" + cue.timecode + "\"");
               cue.timecode.clear();
             }
-            if (const json* j = r.member(c, p, "values", false)) readValues(r, *j, p + "/values", cue);
+            if (const json* j = r.member(c, p, "values", false)) readFixtureValues(r, *j, p + "/values", cue.values, true);
           }
           list.cues.push_back(std::move(cue));
         }
@@ -547,9 +623,14 @@ void readCueLists(Reader& r, const json& root, Show& show) {
   }
 }
 
-// Where a future format version's migrations go: each step rewrites the JSON of version v into
-// version v + 1 in place. Version 1 is the first, so there is nothing to migrate yet.
-bool migrate(json& /*root*/, int version) { return version == kShowFormatVersion; }
+// Each step rewrites the JSON of version v into version v + 1 in place; false for a version this
+// haze never knew. 1 -> 2: version 2 only added `groups` and `palettes` (both optional), so a
+// version-1 document is a version-2 document as it stands.
+bool migrate(json& root, int version) {
+  if (version < 1 || version > kShowFormatVersion) return false;
+  for (int v = version; v < kShowFormatVersion; ++v) root["version"] = v + 1;
+  return true;
+}
 
 }  // namespace
 
@@ -665,12 +746,21 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
     } else {
       return out;
     }
-    r.onlyKeys(root, "", {"format", "version", "venue", "atmosphere", "cameras", "profiles", "fixtures", "cue_lists"});
+    out.show.fileVersion = version;
+    if (version < 2)
+      for (const char* key : {"groups", "palettes"})
+        if (root.contains(key))
+          r.problem(std::string("/") + key, std::string("\"") + key + "\" needs format version 2; this file says " +
+                                                std::to_string(version) + " (set \"version\": 2)");
+    r.onlyKeys(root, "", {"format", "version", "venue", "atmosphere", "cameras", "profiles", "fixtures", "groups",
+                          "palettes", "cue_lists"});
     readVenue(r, root, out.show);
     readAtmosphere(r, root, out.show);
     readCameras(r, root, out.show);
     readProfiles(r, root, out.show);
     readFixtures(r, root, out.show);
+    readGroups(r, root, out.show);
+    readPalettes(r, root, out.show);
     readCueLists(r, root, out.show);
   } catch (const std::exception& e) {
     // Every access above checks types first; this is a last guard so nothing escapes the library.
@@ -683,6 +773,8 @@ Result<Show> loadShow(const std::filesystem::path& file) {
   auto bytes = readShowBytes(file);
   if (!bytes) return bytes.error();
   ShowParse parse = parseShowText(*bytes, file);
+  // A reference that names nothing would play as nothing, in silence: refuse it here as well.
+  if (parse.problems.empty()) parse.problems = checkGroupsAndPalettes(parse.show);
   if (!parse.problems.empty()) {
     Error first = parse.problems.front();
     if (parse.problems.size() > 1)

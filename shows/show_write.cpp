@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "shows/palettes.h"
 #include "shows/show_json.h"
 
 namespace haze {
@@ -104,6 +105,14 @@ ojson valuesJson(const CueValues& v) {
   }
   if (v.bladeRotationDeg) o["blade_rotation"] = tidy(*v.bladeRotationDeg);
   if (v.shutter) o["shutter"] = shutterJson(*v.shutter);
+  if (!v.palettes.empty()) {
+    ojson refs = ojson::object();
+    if (!v.palettes.all.empty()) refs["all"] = v.palettes.all;
+    if (!v.palettes.position.empty()) refs["position"] = v.palettes.position;
+    if (!v.palettes.color.empty()) refs["color"] = v.palettes.color;
+    if (!v.palettes.beam.empty()) refs["beam"] = v.palettes.beam;
+    o["palettes"] = refs;
+  }
   return o;
 }
 
@@ -163,6 +172,31 @@ ojson showJson(const Show& s) {
     fixtures.push_back(o);
   }
   root["fixtures"] = fixtures;
+  if (!s.groups.empty()) {
+    ojson groups = ojson::array();
+    for (const GroupDef& g : s.groups) groups.push_back(ojson{{"name", g.name}, {"fixtures", g.fixtures}});
+    root["groups"] = groups;
+  }
+  if (!s.palettes.empty()) {
+    ojson pals = ojson::array();
+    for (const PaletteDef& p : s.palettes) {
+      ojson o = ojson::object();
+      o["name"] = p.name;
+      o["kind"] = paletteKindName(p.kind);
+      if (!p.groups.empty()) {
+        ojson g = ojson::object();
+        for (const auto& [name, v] : p.groups) g[name] = valuesJson(v);
+        o["groups"] = g;
+      }
+      if (!p.fixtures.empty()) {
+        ojson f = ojson::object();
+        for (const auto& [id, v] : p.fixtures) f[std::to_string(id)] = valuesJson(v);
+        o["fixtures"] = f;
+      }
+      pals.push_back(o);
+    }
+    root["palettes"] = pals;
+  }
   ojson lists = ojson::array();
   for (const CueList& l : s.cueLists) {
     ojson cues = ojson::array();
