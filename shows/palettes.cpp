@@ -201,8 +201,16 @@ struct Checker {
     std::vector<std::string> paletteNames;
     for (const PaletteDef& p : show.palettes) paletteNames.push_back(p.name);
     for (size_t li = 0; li < show.cueLists.size(); ++li)
-      for (size_t ci = 0; ci < show.cueLists[li].cues.size(); ++ci)
-        for (const auto& [id, v] : show.cueLists[li].cues[ci].values) {
+      for (size_t ci = 0; ci < show.cueLists[li].cues.size(); ++ci) {
+        const Cue& cue = show.cueLists[li].cues[ci];
+        if (cue.timing.fan && !cue.timing.fan->group.empty() && !show.findGroup(cue.timing.fan->group)) {
+          std::vector<std::string> groupNames;
+          for (const GroupDef& g : show.groups) groupNames.push_back(g.name);
+          problem("/cue_lists/" + std::to_string(li) + "/cues/" + std::to_string(ci) + "/timing/fan/group",
+                  "the fan names group \"" + cue.timing.fan->group + "\", which is not in /groups; expected one of: " +
+                      quotedList(groupNames));
+        }
+        for (const auto& [id, v] : cue.values) {
           const std::string vp = "/cue_lists/" + std::to_string(li) + "/cues/" + std::to_string(ci) + "/values/" +
                                  std::to_string(id) + "/palettes/";
           const std::pair<PaletteKind, const std::string*> slots[] = {{PaletteKind::All, &v.palettes.all},
@@ -224,6 +232,7 @@ struct Checker {
             }
           }
         }
+      }
   }
 };
 

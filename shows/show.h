@@ -109,6 +109,32 @@ struct PaletteDef {
   std::map<int, CueValues> fixtures;        // by fixture id
 };
 
+// Delay and fade of one part of a cue (docs/show-format.md, "Timing"); unset ones are the cue's.
+struct PartTiming {
+  std::optional<double> delayS, fadeS;
+  bool operator==(const PartTiming&) const = default;
+};
+
+enum class FadeCurve { Linear, SCurve };
+
+// A fan: the k-th fixture of the group (from 0, in the group's order) starts k * delayStepS later
+// and fades k * fadeStepS longer than the cue's times for it.
+struct FanTiming {
+  std::string group;
+  double delayStepS = 0.0, fadeStepS = 0.0;
+  bool operator==(const FanTiming&) const = default;
+};
+
+// Timing beyond the cue's one delay and fade: intensity up and down, position, colour and beam
+// each with their own times, a fan across a group, and the curve every fade of the cue follows.
+struct CueTimingDef {
+  std::optional<PartTiming> up, down, position, color, beam;
+  std::optional<FanTiming> fan;
+  FadeCurve curve = FadeCurve::Linear;
+  bool empty() const { return *this == CueTimingDef{}; }
+  bool operator==(const CueTimingDef&) const = default;
+};
+
 struct Cue {
   std::string number;  // decimal string: "1", "1.5", "10"
   std::string label;
@@ -117,6 +143,7 @@ struct Cue {
   std::optional<double> followS;  // empty = wait for the operator
   std::string timecode;           // "hh:mm:ss:ff": `haze live --timecode` fires it then; "" = none
   std::map<int, CueValues> values;  // by fixture id
+  CueTimingDef timing;
 };
 
 struct CueList {

@@ -569,6 +569,49 @@ void readPalettes(Reader& r, const json& root, Show& show) {
   }
 }
 
+// "timing": {"up", "down", "position", "color", "beam": {"delay", "fade"}, "fan": {"group",
+// "delay", "fade"}, "curve": "linear" | "s-curve"} (docs/show-format.md, "Timing").
+void readTiming(Reader& r, const json& j, const std::string& p, CueTimingDef& t) {
+  if (!r.isObject(j, p, "the cue's timing")) return;
+  r.onlyKeys(j, p, {"up", "down", "position", "color", "beam", "fan", "curve"});
+  double x = 0;
+  auto part = [&](const char* key, std::optional<PartTiming>& out) {
+    const json* pj = r.member(j, p, key, false);
+    const std::string pp = p + "/" + key;
+    if (!pj || !r.isObject(*pj, pp, "a delay and fade")) return;
+    r.onlyKeys(*pj, pp, {"delay", "fade"});
+    PartTiming pt;
+    if (const json* d = r.member(*pj, pp, "delay", false))
+      if (r.number(*d, pp + "/delay", 0.0, kInf, "a delay in seconds", x)) pt.delayS = x;
+    if (const json* f = r.member(*pj, pp, "fade", false))
+      if (r.number(*f, pp + "/fade", 0.0, kInf, "a fade time in seconds", x)) pt.fadeS = x;
+    out = pt;
+  };
+  part("up", t.up);
+  part("down", t.down);
+  part("position", t.position);
+  part("color", t.color);
+  part("beam", t.beam);
+  if (const json* f = r.member(j, p, "fan", false); f && r.isObject(*f, p + "/fan", "a fan across a group")) {
+    const std::string fp = p + "/fan";
+    r.onlyKeys(*f, fp, {"group", "delay", "fade"});
+    FanTiming fan;
+    r.stringMember(*f, fp, "group", true, "the name of a group in /groups", fan.group, true);
+    if (const json* d = r.member(*f, fp, "delay", false))
+      if (r.number(*d, fp + "/delay", 0.0, kInf, "a delay step in seconds per fixture", x)) fan.delayStepS = x;
+    if (const json* d = r.member(*f, fp, "fade", false))
+      if (r.number(*d, fp + "/fade", 0.0, kInf, "a fade step in seconds per fixture", x)) fan.fadeStepS = x;
+    t.fan = fan;
+  }
+  std::string curve;
+  if (r.stringMember(j, p, "curve", false, "a fade curve", curve, true)) {
+    if (curve == "linear" || curve == "s-curve")
+      t.curve = curve == "linear" ? FadeCurve::Linear : FadeCurve::SCurve;
+    else
+      r.problem(p + "/curve", "unknown fade curve \"" + curve + "\"; expected linear or s-curve");
+  }
+}
+
 void readCueLists(Reader& r, const json& root, Show& show) {
   const json* lists = r.member(root, "", "cue_lists", false);
   if (!lists || !r.isArray(*lists, "/cue_lists", "the cue lists")) return;
@@ -586,7 +629,7 @@ void readCueLists(Reader& r, const json& root, Show& show) {
           const std::string p = lp + "/cues/" + std::to_string(ci);
           Cue cue;
           if (r.isObject(c, p, "a cue")) {
-            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "timecode", "values"});
+            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "timecode", "timing", "values"});
             if (r.stringMember(c, p, "number", true, "a cue number (a decimal string like \"1.5\")", cue.number, true) &&
                 !isCueNumber(cue.number)) {
               r.problem(p + "/number", "expected a cue number: digits with an optional decimal part, like \"1\" "
@@ -613,6 +656,7 @@ void readCueLists(Reader& r, const json& root, Show& show) {
                                          "00..29), got \"" + cue.timecode + "\"");
               cue.timecode.clear();
             }
+            if (const json* j = r.member(c, p, "timing", false)) readTiming(r, *j, p + "/timing", cue.timing);
             if (const json* j = r.member(c, p, "values", false)) readFixtureValues(r, *j, p + "/values", cue.values, true);
           }
           list.cues.push_back(std::move(cue));
@@ -762,6 +806,13 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
     readGroups(r, root, out.show);
     readPalettes(r, root, out.show);
     readCueLists(r, root, out.show);
+    if (version < 2)
+      for (size_t l = 0; l < out.show.cueLists.size(); ++l)
+        for (size_t c = 0; c < out.show.cueLists[l].cues.size(); ++c)
+          if (!out.show.cueLists[l].cues[c].timing.empty())
+            r.problem("/cue_lists/" + std::to_string(l) + "/cues/" + std::to_string(c) + "/timing",
+                      "\"timing\" needs format version 2; this file says " + std::to_string(version) +
+                          " (set \"version\": 2)");
   } catch (const std::exception& e) {
     // Every access above checks types first; this is a last guard so nothing escapes the library.
     r.problem("", std::string("the show cannot be read: ") + e.what());

@@ -116,6 +116,25 @@ ojson valuesJson(const CueValues& v) {
   return o;
 }
 
+ojson timingJson(const CueTimingDef& t) {
+  ojson o = ojson::object();
+  auto part = [&](const char* key, const std::optional<PartTiming>& p) {
+    if (!p) return;
+    ojson j = ojson::object();
+    if (p->delayS) j["delay"] = *p->delayS;
+    if (p->fadeS) j["fade"] = *p->fadeS;
+    o[key] = j;
+  };
+  part("up", t.up);
+  part("down", t.down);
+  part("position", t.position);
+  part("color", t.color);
+  part("beam", t.beam);
+  if (t.fan) o["fan"] = ojson{{"group", t.fan->group}, {"delay", t.fan->delayStepS}, {"fade", t.fan->fadeStepS}};
+  if (t.curve != FadeCurve::Linear) o["curve"] = "s-curve";
+  return o;
+}
+
 ojson showJson(const Show& s) {
   ojson root = ojson::object();
   root["format"] = "haze-show";
@@ -208,6 +227,7 @@ ojson showJson(const Show& s) {
       o["delay"] = c.delayS;
       o["follow"] = c.followS ? ojson(*c.followS) : ojson(nullptr);
       if (!c.timecode.empty()) o["timecode"] = c.timecode;
+      if (!c.timing.empty()) o["timing"] = timingJson(c.timing);
       ojson vals = ojson::object();
       for (const auto& [id, v] : c.values) vals[std::to_string(id)] = valuesJson(v);
       o["values"] = vals;
