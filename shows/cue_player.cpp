@@ -65,9 +65,11 @@ bool CuePlayer::gotoCue(size_t cueIndex, double nowS) {
 bool CuePlayer::jumpTo(size_t cueIndex, double nowS) {
   if (cueIndex >= list_.cues.size()) return false;
   from_ = to_ = trackedState(show_, profiles_, list_, cueIndex);
-  fadingCue_ = nullptr;
+  // As if GO had been long enough ago for the fade to be over; its effects run on.
+  // from_ == to_, so only the effects move; fading() is false from now on.
+  fadingCue_ = &list_.cues[cueIndex];
+  goAtS_ = nowS - cueDurationS(show_, *fadingCue_);
   durationS_ = 0.0;
-  goAtS_ = nowS;
   current_ = cueIndex;
   followAtS_.reset();
   return true;

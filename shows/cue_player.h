@@ -47,7 +47,7 @@ class CuePlayer {
   const ProfileSet& profiles_;
   const CueList& list_;
   StageState from_, to_;
-  const Cue* fadingCue_ = nullptr;  // the cue whose timing the fade follows; none: at to_
+  const Cue* fadingCue_ = nullptr;  // the cue whose timing and effects play; none: at to_
   double durationS_ = 0.0;
   double goAtS_ = 0.0;
   std::optional<size_t> current_;

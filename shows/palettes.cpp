@@ -210,6 +210,15 @@ struct Checker {
                   "the fan names group \"" + cue.timing.fan->group + "\", which is not in /groups; expected one of: " +
                       quotedList(groupNames));
         }
+        for (size_t ei = 0; ei < cue.effects.size(); ++ei)
+          if (!cue.effects[ei].group.empty() && !show.findGroup(cue.effects[ei].group)) {
+            std::vector<std::string> groupNames;
+            for (const GroupDef& g : show.groups) groupNames.push_back(g.name);
+            problem("/cue_lists/" + std::to_string(li) + "/cues/" + std::to_string(ci) + "/effects/" +
+                        std::to_string(ei) + "/group",
+                    "the effect names group \"" + cue.effects[ei].group + "\", which is not in /groups; expected one of: " +
+                        quotedList(groupNames));
+          }
         for (const auto& [id, v] : cue.values) {
           const std::string vp = "/cue_lists/" + std::to_string(li) + "/cues/" + std::to_string(ci) + "/values/" +
                                  std::to_string(id) + "/palettes/";

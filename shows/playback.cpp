@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "shows/cue_number.h"
+#include "shows/effects.h"
 #include "shows/palettes.h"
 
 namespace haze {
@@ -177,6 +178,56 @@ Attributes blendAttributesAt(const Attributes& from, const Attributes& to, const
                     fieldAngleDeg);
 }
 
+static void applyEffects(const Show& show, const ProfileSet& profiles, const Cue& cue, double t, StageState& stage) {
+  for (const EffectDef& e : cue.effects) {
+    const GroupDef* g = show.findGroup(e.group);
+    if (!g) continue;  // loadShow refuses a show whose effect names no group
+    const size_t n = g->fixtures.size();
+    for (size_t k = 0; k < n; ++k) {
+      auto it = stage.find(g->fixtures[k]);
+      if (it == stage.end()) continue;
+      Attributes& a = it->second;
+      // The effect grows in with the fade of the part it moves (0 during the part's delay).
+      const FixtureTiming ft = fixtureTiming(show, cue, it->first);
+      auto grown = [&](const CueTiming& part) {
+        return std::clamp(curveProgress(ft.curve, fadeProgress(part, t)), 0.0, 1.0);
+      };
+      double tiltWave = 0.0;
+      const double w = effectWave(e, k, n, t, &tiltWave);
+      const std::string& at = e.attribute;
+      auto add = [&](float& v, double amount, double lo, double hi) {
+        v = static_cast<float>(std::clamp(static_cast<double>(v) + amount, lo, hi));
+      };
+      constexpr double kFree = 1e9;
+      if (at == "intensity") {
+        add(a.intensity, e.size * w * std::max(grown(ft.up), grown(ft.down)), 0.0, 1.0);
+      } else if (at == "position") {
+        add(a.panDeg, e.size * w * grown(ft.position), -kFree, kFree);
+        add(a.tiltDeg, e.size * tiltWave * grown(ft.position), -kFree, kFree);
+      } else if (at == "pan" || at == "tilt") {
+        add(at == "pan" ? a.panDeg : a.tiltDeg, e.size * w * grown(ft.position), -kFree, kFree);
+      } else {
+        const double amount = e.size * w * grown(ft.beam);
+        if (at == "zoom") {
+          float z = a.zoomDeg ? *a.zoomDeg : fieldAngleOf(show, profiles, it->first).value_or(0.0f);
+          if (a.zoomDeg || z > 0.0f) {
+            add(z, amount, 0.1, 179.0);
+            a.zoomDeg = z;
+          }
+        } else if (at == "iris") {
+          add(a.iris, amount, 0.0, 1.0);
+        } else if (at == "frost") {
+          add(a.frost, amount, 0.0, 1.0);
+        } else if (at == "gobo_rotation") {
+          add(a.goboRotationDeg, amount, -kFree, kFree);
+        } else if (at == "prism_rotation") {
+          add(a.prismRotationDeg, amount, -kFree, kFree);
+        }
+      }
+    }
+  }
+}
+
 StageState blendStatesAt(const Show& show, const ProfileSet& profiles, const StageState& from, const StageState& to,
                          const Cue& cue, double secondsSinceGo) {
   StageState out = to;
@@ -185,6 +236,7 @@ StageState blendStatesAt(const Show& show, const ProfileSet& profiles, const Sta
     if (src == from.end()) continue;
     a = blendAttributesAt(src->second, a, fixtureTiming(show, cue, id), secondsSinceGo, fieldAngleOf(show, profiles, id));
   }
+  applyEffects(show, profiles, cue, secondsSinceGo, out);
   return out;
 }
 

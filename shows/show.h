@@ -135,6 +135,22 @@ struct CueTimingDef {
   bool operator==(const CueTimingDef&) const = default;
 };
 
+enum class EffectShape { Sine, Circle, Square, Ramp, Random };
+
+// A parametric effect that runs on a group while its cue is on stage (docs/show-format.md,
+// "Effects"): the attribute moves by size * w(rate * t + phase), w in -1..1, where t is the time
+// since GO and the k-th of the group's n fixtures has phase phaseDeg + k * spreadDeg / n.
+struct EffectDef {
+  EffectShape shape = EffectShape::Sine;
+  std::string attribute;   // intensity, pan, tilt, zoom, iris, frost, gobo_rotation, prism_rotation; circle: position
+  std::string group;
+  double rateHz = 1.0;     // cycles per second; negative runs the other way
+  double size = 0.0;       // in the attribute's unit (degrees for pan, tilt and circle)
+  double phaseDeg = 0.0, spreadDeg = 0.0;
+  std::uint32_t seed = 0;  // random: which sequence
+  bool operator==(const EffectDef&) const = default;
+};
+
 struct Cue {
   std::string number;  // decimal string: "1", "1.5", "10"
   std::string label;
@@ -144,6 +160,7 @@ struct Cue {
   std::string timecode;           // "hh:mm:ss:ff": `haze live --timecode` fires it then; "" = none
   std::map<int, CueValues> values;  // by fixture id
   CueTimingDef timing;
+  std::vector<EffectDef> effects;
 };
 
 struct CueList {

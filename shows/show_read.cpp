@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "shows/cue_number.h"
+#include "shows/effects.h"
 #include "shows/palettes.h"
 #include "shows/timecode.h"
 #include "shows/show_json.h"
@@ -612,6 +613,66 @@ void readTiming(Reader& r, const json& j, const std::string& p, CueTimingDef& t)
   }
 }
 
+constexpr const char* kEffectAttributes[] = {"intensity", "pan", "tilt", "zoom", "iris", "frost", "gobo_rotation",
+                                             "prism_rotation"};
+
+// "effects": [{"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed"}]
+void readEffects(Reader& r, const json& j, const std::string& ep, std::vector<EffectDef>& out) {
+  if (!r.isArray(j, ep, "the cue's effects")) return;
+  for (size_t i = 0; i < j.size(); ++i) {
+    const json& e = j[i];
+    const std::string p = ep + "/" + std::to_string(i);
+    if (!r.isObject(e, p, "an effect")) continue;
+    r.onlyKeys(e, p, {"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed"});
+    EffectDef d;
+    bool ok = true;
+    std::string shape;
+    if (r.stringMember(e, p, "shape", true, "an effect shape", shape, true)) {
+      const std::pair<const char*, EffectShape> shapes[] = {{"sine", EffectShape::Sine}, {"circle", EffectShape::Circle},
+                                                            {"square", EffectShape::Square}, {"ramp", EffectShape::Ramp},
+                                                            {"random", EffectShape::Random}};
+      bool known = false;
+      for (const auto& [name, s] : shapes)
+        if (shape == name) {
+          known = true;
+          d.shape = s;
+        }
+      if (!known) {
+        r.problem(p + "/shape", "unknown effect shape \"" + shape + "\"; expected sine, circle, square, ramp or random");
+        ok = false;
+      }
+    } else {
+      ok = false;
+    }
+    if (d.shape == EffectShape::Circle) {
+      d.attribute = "position";
+      if (const json* a = r.member(e, p, "attribute", false); a && !(a->is_string() && *a == "position"))
+        r.problem(p + "/attribute", "a circle moves pan and tilt together; expected \"position\" or no attribute");
+    } else if (ok && r.stringMember(e, p, "attribute", true, "the attribute the effect moves", d.attribute, true)) {
+      bool known = false;
+      for (const char* a : kEffectAttributes) known = known || d.attribute == a;
+      if (!known)
+        r.problem(p + "/attribute", "an effect cannot move \"" + d.attribute + "\"; expected intensity, pan, tilt, zoom, "
+                                    "iris, frost, gobo_rotation or prism_rotation (or a circle on position)");
+    }
+    r.stringMember(e, p, "group", true, "the name of a group in /groups", d.group, true);
+    double x = 0;
+    if (const json* v = r.member(e, p, "rate", true))
+      if (r.number(*v, p + "/rate", -100.0, 100.0, "a rate in cycles per second", x)) d.rateHz = x;
+    if (const json* v = r.member(e, p, "size", true))
+      if (r.number(*v, p + "/size", 0.0, 360.0, "a size in the attribute's unit", x)) d.size = x;
+    if (const json* v = r.member(e, p, "phase", false))
+      if (r.number(*v, p + "/phase", -3600.0, 3600.0, "a phase in degrees", x)) d.phaseDeg = x;
+    if (const json* v = r.member(e, p, "spread", false))
+      if (r.number(*v, p + "/spread", -3600.0, 3600.0, "a phase spread across the group in degrees", x)) d.spreadDeg = x;
+    if (const json* v = r.member(e, p, "seed", false)) {
+      int seed = 0;
+      if (r.integer(*v, p + "/seed", 0, INT_MAX, "a random seed", seed)) d.seed = static_cast<std::uint32_t>(seed);
+    }
+    out.push_back(d);
+  }
+}
+
 void readCueLists(Reader& r, const json& root, Show& show) {
   const json* lists = r.member(root, "", "cue_lists", false);
   if (!lists || !r.isArray(*lists, "/cue_lists", "the cue lists")) return;
@@ -629,7 +690,7 @@ void readCueLists(Reader& r, const json& root, Show& show) {
           const std::string p = lp + "/cues/" + std::to_string(ci);
           Cue cue;
           if (r.isObject(c, p, "a cue")) {
-            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "timecode", "timing", "values"});
+            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "timecode", "timing", "effects", "values"});
             if (r.stringMember(c, p, "number", true, "a cue number (a decimal string like \"1.5\")", cue.number, true) &&
                 !isCueNumber(cue.number)) {
               r.problem(p + "/number", "expected a cue number: digits with an optional decimal part, like \"1\" "
@@ -657,6 +718,7 @@ void readCueLists(Reader& r, const json& root, Show& show) {
               cue.timecode.clear();
             }
             if (const json* j = r.member(c, p, "timing", false)) readTiming(r, *j, p + "/timing", cue.timing);
+            if (const json* j = r.member(c, p, "effects", false)) readEffects(r, *j, p + "/effects", cue.effects);
             if (const json* j = r.member(c, p, "values", false)) readFixtureValues(r, *j, p + "/values", cue.values, true);
           }
           list.cues.push_back(std::move(cue));
@@ -808,11 +870,14 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
     readCueLists(r, root, out.show);
     if (version < 2)
       for (size_t l = 0; l < out.show.cueLists.size(); ++l)
-        for (size_t c = 0; c < out.show.cueLists[l].cues.size(); ++c)
-          if (!out.show.cueLists[l].cues[c].timing.empty())
-            r.problem("/cue_lists/" + std::to_string(l) + "/cues/" + std::to_string(c) + "/timing",
-                      "\"timing\" needs format version 2; this file says " + std::to_string(version) +
-                          " (set \"version\": 2)");
+        for (size_t c = 0; c < out.show.cueLists[l].cues.size(); ++c) {
+          const Cue& cue = out.show.cueLists[l].cues[c];
+          const std::string p = "/cue_lists/" + std::to_string(l) + "/cues/" + std::to_string(c);
+          const std::string need = " needs format version 2; this file says " + std::to_string(version) +
+                                   " (set \"version\": 2)";
+          if (!cue.timing.empty()) r.problem(p + "/timing", "\"timing\"" + need);
+          if (!cue.effects.empty()) r.problem(p + "/effects", "\"effects\"" + need);
+        }
   } catch (const std::exception& e) {
     // Every access above checks types first; this is a last guard so nothing escapes the library.
     r.problem("", std::string("the show cannot be read: ") + e.what());

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "shows/effects.h"
 #include "shows/palettes.h"
 #include "shows/show_json.h"
 
@@ -228,6 +229,22 @@ ojson showJson(const Show& s) {
       o["follow"] = c.followS ? ojson(*c.followS) : ojson(nullptr);
       if (!c.timecode.empty()) o["timecode"] = c.timecode;
       if (!c.timing.empty()) o["timing"] = timingJson(c.timing);
+      if (!c.effects.empty()) {
+        ojson effects = ojson::array();
+        for (const EffectDef& e : c.effects) {
+          ojson j = ojson::object();
+          j["shape"] = effectShapeName(e.shape);
+          if (e.shape != EffectShape::Circle) j["attribute"] = e.attribute;
+          j["group"] = e.group;
+          j["rate"] = e.rateHz;
+          j["size"] = e.size;
+          if (e.phaseDeg != 0.0) j["phase"] = e.phaseDeg;
+          if (e.spreadDeg != 0.0) j["spread"] = e.spreadDeg;
+          if (e.shape == EffectShape::Random) j["seed"] = e.seed;
+          effects.push_back(j);
+        }
+        o["effects"] = effects;
+      }
       ojson vals = ojson::object();
       for (const auto& [id, v] : c.values) vals[std::to_string(id)] = valuesJson(v);
       o["values"] = vals;
