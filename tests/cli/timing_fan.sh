@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A cue's timing through `haze state --at` (docs/show-format.md, "Timing"): a fan of 0.25 s delays
 # across a 12-fixture group (whose order is not the id order) lands each fixture at its own time,
-# checked 1 ms before and 1 ms after it; an s-curve fade matches 3p^2 - 2p^3; a version-1 show
+# checked 1 ms before and 1 ms after it; an s-curve fade matches 3p^2 - 2p^3; a sine effect with
+# a phase spread of 360 degrees matches 0.5 + 0.25 sin(2 pi (0.5 t + k / 12)); a version-1 show
 # with timing is refused at its place. Usage: timing_fan.sh HAZE REPO
 set -u
 haze=$1
@@ -23,7 +24,9 @@ node -e '
     cue_lists: [{ name: "Main", cues: [
       { number: "1", values: {} },
       { number: "2", delay: 0.5, timing: { fan: { group: "Row", delay: 0.25 } }, values: all({ intensity: 1 }) },
-      { number: "3", fade: 4, timing: { curve: "s-curve" }, values: all({ intensity: 0 }) } ] }] }, null, 1));
+      { number: "3", fade: 4, timing: { curve: "s-curve" }, values: all({ intensity: 0 }) },
+      { number: "4", values: all({ intensity: 0.5 }),
+        effects: [{ shape: "sine", attribute: "intensity", group: "Row", rate: 0.5, size: 0.25, spread: 360 }] } ] }] }, null, 1));
 ' "$repo" >"$show"
 order=$(node -e 'console.log(require(process.argv[1]).groups[0].fixtures.join(" "))' "$show")
 
@@ -58,6 +61,20 @@ for t in 0.5 1 2 3 3.5; do
     passed=$((passed + 1))
   else
     echo "FAIL: s-curve at $t s"
+    fail=$((fail + 1))
+  fi
+done
+
+# Sine effect: the k-th fixture of the group at 0.5 + 0.25 sin(2 pi (0.5 t + k / 12)).
+for t in 0 0.3 1.7 5.25 30.1; do
+  if "$haze" state "$show" --cue 4 --at "$t" --movement instant --json | node -e '
+      const s = JSON.parse(require("fs").readFileSync(0)), t = Number(process.argv[1]);
+      const bad = process.argv.slice(2).map((id, k) => [id, s[id].intensity, 0.5 + 0.25 * Math.sin(2 * Math.PI * (0.5 * t + k / 12))])
+        .filter(([id, got, want]) => Math.abs(got - want) > 1e-6);
+      if (bad.length) { console.log("fixture " + bad[0][0] + ": expected " + bad[0][2] + ", got " + bad[0][1]); process.exit(1); }' "$t" $order; then
+    passed=$((passed + 1))
+  else
+    echo "FAIL: sine effect at $t s"
     fail=$((fail + 1))
   fi
 done
