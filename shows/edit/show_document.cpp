@@ -58,7 +58,7 @@ bool sameCues(const std::vector<CueList>& a, const std::vector<CueList>& b) {
     for (size_t i = 0; i < a[l].cues.size(); ++i) {
       const Cue &x = a[l].cues[i], &y = b[l].cues[i];
       if (x.number != y.number || x.label != y.label || x.fadeS != y.fadeS || x.delayS != y.delayS ||
-          x.followS != y.followS || x.timing != y.timing || x.values != y.values)
+          x.followS != y.followS || x.timing != y.timing || x.effects != y.effects || x.values != y.values)
         return false;
     }
   }
