@@ -131,7 +131,7 @@ int runRender(const Args& args) {
     }
     if (!timelineFile.empty()) {
       if (!from.empty() || !to.empty()) return fail("--timeline gives the GOs itself: no --from or --to with it");
-      auto timeline = readTimeline(timelineFile, *cueList, hold);
+      auto timeline = readTimeline(timelineFile, *show, *cueList, hold);
       if (!timeline) return fail(timeline.error().str());
       job.timeline = std::move(*timeline);
     }

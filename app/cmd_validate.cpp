@@ -1,22 +1,28 @@
-// `haze validate SHOW`: every problem of a show, one line each on stderr ("file:pointer:
-// sentence"), exit 1; a valid show prints a one-line summary on stdout and exits 0. Bad
-// arguments exit 2.
+// `haze validate SHOW [--save-as OUT]`: every problem of a show, one line each on stderr
+// ("file:pointer: sentence"), exit 1; a valid show prints a one-line summary on stdout (and a
+// line saying so when an older format version was migrated) and exits 0. --save-as writes the
+// valid show as read, in the newest format version, to OUT. Bad arguments exit 2.
 #include <iostream>
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "shows/show_save.h"
 #include "shows/show_validate.h"
 
 namespace haze {
 
 namespace {
-constexpr const char* kUsage = "usage: haze validate SHOW";
+constexpr const char* kUsage = "usage: haze validate SHOW [--save-as OUT]";
 }
 
 int runValidate(const Args& args) {
-  std::string file;
-  CommandLine cli("haze validate", std::string(kUsage) + "\n  Checks a show file and its profiles; lists every problem with its JSON pointer.\n", 2);
-  cli.positional(file, "show");
+  std::string file, saveAs;
+  CommandLine cli("haze validate",
+                  std::string(kUsage) +
+                      "\n  Checks a show file and its profiles; lists every problem with its JSON pointer.\n"
+                      "  --save-as OUT  write the valid show, in the newest format version, to OUT\n",
+                  2);
+  cli.text("--save-as", saveAs, "a file to write the show to").positional(file, "show");
   if (auto done = cli.parse(args)) return *done;
   std::vector<Error> problems = validateShowFile(file);
   for (const Error& e : problems) std::cerr << e.str() << "\n";
@@ -29,7 +35,21 @@ int runValidate(const Args& args) {
   if (show)
     for (const CueList& l : show->cueLists) cues += l.cues.size();
   std::cout << file << ": valid (" << (show ? show->fixtures.size() : 0) << " fixtures, "
+            << (show ? show->groups.size() : 0) << " groups, " << (show ? show->palettes.size() : 0) << " palettes, "
             << (show ? show->cueLists.size() : 0) << " cue lists, " << cues << " cues)\n";
+  if (show && show->fileVersion < kShowFormatVersion)
+    std::cout << file << ": format version " << show->fileVersion << ", migrated to version " << kShowFormatVersion
+              << " as it was read (version 2 adds groups and palettes; nothing else changes); saving writes version "
+              << kShowFormatVersion << "\n";
+  if (!saveAs.empty() && show) {
+    SaveOptions options;
+    options.keepBackup = false;
+    if (Status saved = saveShow(*show, saveAs, options); !saved) {
+      std::cerr << saved.error().str() << "\n";
+      return 1;
+    }
+    std::cout << saveAs << ": written (format version " << kShowFormatVersion << ")\n";
+  }
   return 0;
 }
 

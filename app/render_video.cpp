@@ -73,7 +73,7 @@ bool isImageSequence(const std::filesystem::path& out, std::string& error) {
   return true;
 }
 
-Result<CueTimeline> readTimeline(const std::filesystem::path& file, const CueList& list, double holdS) {
+Result<CueTimeline> readTimeline(const std::filesystem::path& file, const Show& show, const CueList& list, double holdS) {
   std::ifstream in(file, std::ios::binary);
   if (!in) return Error{file.string(), "", "cannot open the timeline"};
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -96,7 +96,7 @@ Result<CueTimeline> readTimeline(const std::filesystem::path& file, const CueLis
     last = go["at"].get<double>();
     timeline.gos.push_back({.cueIndex = *cue, .atS = last});
     const Cue& c = list.cues[*cue];
-    timeline.endS = std::max(timeline.endS, last + c.delayS + c.fadeS + holdS);
+    timeline.endS = std::max(timeline.endS, last + cueDurationS(show, c) + holdS);
   }
   if (doc.contains("end")) {
     if (!doc["end"].is_number() || doc["end"].get<double>() <= 0) return bad("/end", "expected seconds > 0");
@@ -107,7 +107,7 @@ Result<CueTimeline> readTimeline(const std::filesystem::path& file, const CueLis
 
 Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const ProfileSet& profiles, const VideoJob& job) {
   const CueList& list = *job.list;
-  const CueTimeline timeline = job.timeline ? *job.timeline : playCueRange(list, job.from, job.to, job.holdS);
+  const CueTimeline timeline = job.timeline ? *job.timeline : playCueRange(show, list, job.from, job.to, job.holdS);
   const size_t firstCue = timeline.gos.empty() ? job.from : timeline.gos.front().cueIndex;
   const double endS = job.durationS > 0 ? job.durationS : timeline.endS;
   const int frames = std::max(1, static_cast<int>(std::ceil(endS * job.fps - 1e-9)));

@@ -33,7 +33,7 @@ struct VideoJob {
 // increasing times (the first at 0 or later), follows still firing by themselves; "end"
 // (optional) is where the video stops, by default holdS after the last GO's delay and fade.
 // Errors name the file and the JSON pointer.
-Result<CueTimeline> readTimeline(const std::filesystem::path& file, const CueList& list, double holdS);
+Result<CueTimeline> readTimeline(const std::filesystem::path& file, const Show& show, const CueList& list, double holdS);
 
 // True when `out` names an image sequence: a printf-style frame number (%d, %05d) and .png or
 // .exr. A '%' that is not one such number is an error (named in `error`).

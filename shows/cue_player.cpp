@@ -9,19 +9,21 @@ CuePlayer::CuePlayer(const Show& show, const ProfileSet& profiles, const CueList
     : show_(show), profiles_(profiles), list_(list), from_(defaultState(show)), to_(from_) {}
 
 StageState CuePlayer::stageAt(double nowS) const {
-  return blendStates(show_, profiles_, from_, to_, fadeProgress(timing_, nowS - goAtS_));
+  if (!fadingCue_) return to_;
+  return blendStatesAt(show_, profiles_, from_, to_, *fadingCue_, nowS - goAtS_);
 }
 
 void CuePlayer::start(size_t cueIndex, double atS, bool armFollow) {
   const Cue& cue = list_.cues[cueIndex];
   from_ = stageAt(atS);
   to_ = trackedState(show_, profiles_, list_, cueIndex);
-  timing_ = CueTiming{cue.delayS, cue.fadeS};
+  fadingCue_ = &cue;
+  durationS_ = cueDurationS(show_, cue);
   goAtS_ = atS;
   current_ = cueIndex;
   followAtS_.reset();
   if (armFollow && cue.followS && cueIndex + 1 < list_.cues.size())
-    followAtS_ = atS + cue.delayS + cue.fadeS + *cue.followS;
+    followAtS_ = atS + durationS_ + *cue.followS;
 }
 
 void CuePlayer::update(double nowS) {
@@ -63,15 +65,18 @@ bool CuePlayer::gotoCue(size_t cueIndex, double nowS) {
 bool CuePlayer::jumpTo(size_t cueIndex, double nowS) {
   if (cueIndex >= list_.cues.size()) return false;
   from_ = to_ = trackedState(show_, profiles_, list_, cueIndex);
-  timing_ = CueTiming{};
-  goAtS_ = nowS;
+  // As if GO had been long enough ago for the fade to be over; its effects run on.
+  // from_ == to_, so only the effects move; fading() is false from now on.
+  fadingCue_ = &list_.cues[cueIndex];
+  goAtS_ = nowS - cueDurationS(show_, *fadingCue_);
+  durationS_ = 0.0;
   current_ = cueIndex;
   followAtS_.reset();
   return true;
 }
 
 bool CuePlayer::fading(double nowS) const {
-  return current_ && nowS - goAtS_ < timing_.delayS + timing_.fadeS;
+  return current_ && nowS - goAtS_ < durationS_;
 }
 
 }  // namespace haze

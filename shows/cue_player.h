@@ -1,12 +1,12 @@
 // CuePlayer: the clock-driven face of cue playback for the GUI and live playback. It is given the
 // time (seconds on any monotonic clock) and never sleeps; ask for state(now) every frame.
 //   GO       the next cue, fading from whatever is on stage now (mid-fade included) with the
-//            next cue's delay and fade; arms that cue's follow.
+//            next cue's timing (delay and fade, or its parts and fan); arms that cue's follow.
 //   BACK     the previous cue with that cue's times (arms no follow).
 //   GOTO N   from whatever is on stage now to cue N's tracked state with cue N's times; arms
 //            cue N's follow.
 //   follow   a cue with follow s makes the next cue GO by itself s seconds after its delay + fade
-//            have finished. Follows fire at their exact times, however seldom the clock is read,
+//            (its last part, cueDurationS) have finished. Follows fire at their exact times, however seldom the clock is read,
 //            so a follow chain plays the same at 5 or 500 frames per second.
 #pragma once
 
@@ -47,7 +47,8 @@ class CuePlayer {
   const ProfileSet& profiles_;
   const CueList& list_;
   StageState from_, to_;
-  CueTiming timing_;
+  const Cue* fadingCue_ = nullptr;  // the cue whose timing and effects play; none: at to_
+  double durationS_ = 0.0;
   double goAtS_ = 0.0;
   std::optional<size_t> current_;
   std::optional<double> followAtS_;

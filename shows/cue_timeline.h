@@ -23,6 +23,7 @@ struct CueTimeline {
 };
 
 // from <= to < list.cues.size(); holdS >= 0.
-CueTimeline playCueRange(const CueList& list, size_t from, size_t to, double holdS);
+// The show gives each cue's full duration (cueDurationS: fans and part times included).
+CueTimeline playCueRange(const Show& show, const CueList& list, size_t from, size_t to, double holdS);
 
 }  // namespace haze

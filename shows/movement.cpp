@@ -160,11 +160,10 @@ StageState movingStateAt(const Show& show, const ProfileSet& profiles, const Cue
   const StageState from = cueIndex == 0 ? defaultState(show) : trackedState(show, profiles, list, cueIndex - 1);
   const StageState to = trackedState(show, profiles, list, cueIndex);
   const Cue& cue = list.cues[cueIndex];
-  const CueTiming timing{cue.delayS, cue.fadeS};
+  const double doneS = cueDurationS(show, cue);
   return followCommand(
-      show, profiles,
-      [&](double t) { return blendStates(show, profiles, from, to, fadeProgress(timing, t)); },
-      [&](double t) { return t >= timing.delayS + timing.fadeS; }, secondsSinceGo, &to);
+      show, profiles, [&](double t) { return blendStatesAt(show, profiles, from, to, cue, t); },
+      [&](double t) { return t >= doneS; }, secondsSinceGo, &to);
 }
 
 }  // namespace haze

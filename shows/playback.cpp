@@ -7,6 +7,8 @@
 #include <algorithm>
 
 #include "shows/cue_number.h"
+#include "shows/effects.h"
+#include "shows/palettes.h"
 
 namespace haze {
 
@@ -51,7 +53,8 @@ StageState trackedState(const Show& show, const ProfileSet& /*profiles*/, const 
   for (size_t i = 0; i <= cueIndex && i < list.cues.size(); ++i)
     for (const auto& [id, v] : list.cues[i].values) {
       auto it = s.find(id);
-      if (it != s.end()) overlayValues(it->second, v);  // values for unknown ids: validation reports them
+      // Palettes resolve here, as the cue plays, so a changed palette reaches every cue using it.
+      if (it != s.end()) overlayValues(it->second, resolveValues(show, id, v));  // unknown ids: validation reports them
     }
   return s;
 }
@@ -62,36 +65,179 @@ double fadeProgress(const CueTiming& t, double secondsSinceGo) {
   return std::clamp((secondsSinceGo - t.delayS) / t.fadeS, 0.0, 1.0);
 }
 
-Attributes blendAttributes(const Attributes& from, const Attributes& to, double progress,
-                           std::optional<float> fieldAngleDeg) {
-  if (progress < 0.0) return from;
-  if (progress >= 1.0) return to;
-  float f = static_cast<float>(progress);
-  Attributes a = to;  // discrete attributes (gobo) already switched: the fade has started
-  a.intensity = lerp(from.intensity, to.intensity, f);
-  a.panDeg = lerp(from.panDeg, to.panDeg, f);
-  a.tiltDeg = lerp(from.tiltDeg, to.tiltDeg, f);
-  a.color = from.color + (to.color - from.color) * f;
-  a.goboRotationDeg = lerp(from.goboRotationDeg, to.goboRotationDeg, f);
-  a.iris = lerp(from.iris, to.iris, f);
+double curveProgress(FadeCurve curve, double p) {
+  if (p <= 0.0 || p >= 1.0) return p;  // -1 (the delay) and the ends stay as they are
+  return curve == FadeCurve::SCurve ? p * p * (3.0 - 2.0 * p) : p;
+}
+
+namespace {
+
+// Each part of one fixture's fade at its own progress (fadeProgress, -1 during its delay).
+struct PartProgress {
+  double up, down, position, color, beam;
+};
+
+float mix(float a, float b, double p) { return p < 0.0 ? a : p >= 1.0 ? b : lerp(a, b, static_cast<float>(p)); }
+glm::vec3 mix(const glm::vec3& a, const glm::vec3& b, double p) {
+  return p < 0.0 ? a : p >= 1.0 ? b : a + (b - a) * static_cast<float>(p);
+}
+// Intensity rises on the up time and falls on the down time.
+float mixIntensity(float a, float b, const PartProgress& p) { return mix(a, b, b >= a ? p.up : p.down); }
+
+Attributes blendParts(const Attributes& from, const Attributes& to, const PartProgress& p,
+                      std::optional<float> fieldAngleDeg) {
+  const double parts[] = {p.up, p.down, p.position, p.color, p.beam};
+  if (std::all_of(std::begin(parts), std::end(parts), [](double x) { return x < 0.0; })) return from;
+  if (std::all_of(std::begin(parts), std::end(parts), [](double x) { return x >= 1.0; })) return to;
+  Attributes a = to;
+  a.intensity = mixIntensity(from.intensity, to.intensity, p);
+  a.panDeg = mix(from.panDeg, to.panDeg, p.position);
+  a.tiltDeg = mix(from.tiltDeg, to.tiltDeg, p.position);
+  a.color = mix(from.color, to.color, p.color);
   a.cells.resize(std::max(from.cells.size(), to.cells.size()));
   for (size_t k = 0; k < a.cells.size(); ++k) {
     const CellAttributes c0 = cellAttributes(from, k), c1 = cellAttributes(to, k);
-    a.cells[k].intensity = lerp(c0.intensity, c1.intensity, f);
-    a.cells[k].color = c0.color + (c1.color - c0.color) * f;
+    a.cells[k].intensity = mixIntensity(c0.intensity, c1.intensity, p);
+    a.cells[k].color = mix(c0.color, c1.color, p.color);
   }
-  // Optics: prism and shutter switched with the gobo (a = to); the rest fades.
-  a.frost = lerp(from.frost, to.frost, f);
-  a.prismRotationDeg = lerp(from.prismRotationDeg, to.prismRotationDeg, f);
-  a.bladeRotationDeg = lerp(from.bladeRotationDeg, to.bladeRotationDeg, f);
-  for (size_t k = 0; k < a.blades.size(); ++k) a.blades[k] = from.blades[k] + (to.blades[k] - from.blades[k]) * f;
+  // The beam: gobo, prism and shutter switch when the beam's fade starts; the rest fades.
+  if (p.beam < 0.0) {
+    a.gobo = from.gobo;
+    a.prism = from.prism;
+    a.shutter = from.shutter;
+  }
+  a.goboRotationDeg = mix(from.goboRotationDeg, to.goboRotationDeg, p.beam);
+  a.iris = mix(from.iris, to.iris, p.beam);
+  a.frost = mix(from.frost, to.frost, p.beam);
+  a.prismRotationDeg = mix(from.prismRotationDeg, to.prismRotationDeg, p.beam);
+  a.bladeRotationDeg = mix(from.bladeRotationDeg, to.bladeRotationDeg, p.beam);
+  for (size_t k = 0; k < a.blades.size(); ++k)
+    a.blades[k] = p.beam < 0.0 ? from.blades[k] : p.beam >= 1.0 ? to.blades[k]
+                                                 : from.blades[k] + (to.blades[k] - from.blades[k]) * static_cast<float>(p.beam);
   // An unset zoom means the profile's field angle: fade through that number when one side is set.
-  if (from.zoomDeg != to.zoomDeg) {
+  if (p.beam < 0.0) {
+    a.zoomDeg = from.zoomDeg;
+  } else if (p.beam < 1.0 && from.zoomDeg != to.zoomDeg) {
     std::optional<float> z0 = from.zoomDeg ? from.zoomDeg : fieldAngleDeg;
     std::optional<float> z1 = to.zoomDeg ? to.zoomDeg : fieldAngleDeg;
-    if (z0 && z1) a.zoomDeg = lerp(*z0, *z1, f);  // without a profile the zoom snaps with the gobo
+    if (z0 && z1) a.zoomDeg = lerp(*z0, *z1, static_cast<float>(p.beam));  // without a profile the zoom snaps
   }
   return a;
+}
+
+std::optional<float> fieldAngleOf(const Show& show, const ProfileSet& profiles, int id) {
+  if (const FixtureDef* f = show.findFixture(id)) {
+    auto p = profiles.find(f->profile);
+    if (p != profiles.end() && p->second) return p->second->fieldAngleDeg;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+Attributes blendAttributes(const Attributes& from, const Attributes& to, double progress,
+                           std::optional<float> fieldAngleDeg) {
+  return blendParts(from, to, PartProgress{progress, progress, progress, progress, progress}, fieldAngleDeg);
+}
+
+FixtureTiming fixtureTiming(const Show& show, const Cue& cue, int fixtureId) {
+  const CueTimingDef& t = cue.timing;
+  double extraDelay = 0.0, extraFade = 0.0;
+  if (t.fan)
+    if (const GroupDef* g = show.findGroup(t.fan->group))
+      for (size_t k = 0; k < g->fixtures.size(); ++k)
+        if (g->fixtures[k] == fixtureId) {
+          extraDelay = static_cast<double>(k) * t.fan->delayStepS;
+          extraFade = static_cast<double>(k) * t.fan->fadeStepS;
+          break;
+        }
+  auto part = [&](const std::optional<PartTiming>& p) {
+    return CueTiming{(p && p->delayS ? *p->delayS : cue.delayS) + extraDelay,
+                     (p && p->fadeS ? *p->fadeS : cue.fadeS) + extraFade};
+  };
+  return FixtureTiming{part(t.up), part(t.down), part(t.position), part(t.color), part(t.beam), t.curve};
+}
+
+double FixtureTiming::endS() const {
+  double end = 0.0;
+  for (const CueTiming& p : {up, down, position, color, beam}) end = std::max(end, p.delayS + p.fadeS);
+  return end;
+}
+
+double cueDurationS(const Show& show, const Cue& cue) {
+  if (cue.timing.empty()) return cue.delayS + cue.fadeS;
+  double end = fixtureTiming(show, cue, 0).endS();  // a fixture in no fan (ids start at 1)
+  for (const FixtureDef& f : show.fixtures) end = std::max(end, fixtureTiming(show, cue, f.id).endS());
+  return end;
+}
+
+Attributes blendAttributesAt(const Attributes& from, const Attributes& to, const FixtureTiming& t,
+                             double secondsSinceGo, std::optional<float> fieldAngleDeg) {
+  auto at = [&](const CueTiming& part) { return curveProgress(t.curve, fadeProgress(part, secondsSinceGo)); };
+  return blendParts(from, to, PartProgress{at(t.up), at(t.down), at(t.position), at(t.color), at(t.beam)},
+                    fieldAngleDeg);
+}
+
+static void applyEffects(const Show& show, const ProfileSet& profiles, const Cue& cue, double t, StageState& stage) {
+  for (const EffectDef& e : cue.effects) {
+    const GroupDef* g = show.findGroup(e.group);
+    if (!g) continue;  // loadShow refuses a show whose effect names no group
+    const size_t n = g->fixtures.size();
+    for (size_t k = 0; k < n; ++k) {
+      auto it = stage.find(g->fixtures[k]);
+      if (it == stage.end()) continue;
+      Attributes& a = it->second;
+      // The effect grows in with the fade of the part it moves (0 during the part's delay).
+      const FixtureTiming ft = fixtureTiming(show, cue, it->first);
+      auto grown = [&](const CueTiming& part) {
+        return std::clamp(curveProgress(ft.curve, fadeProgress(part, t)), 0.0, 1.0);
+      };
+      double tiltWave = 0.0;
+      const double w = effectWave(e, k, n, t, &tiltWave);
+      const std::string& at = e.attribute;
+      auto add = [&](float& v, double amount, double lo, double hi) {
+        v = static_cast<float>(std::clamp(static_cast<double>(v) + amount, lo, hi));
+      };
+      constexpr double kFree = 1e9;
+      if (at == "intensity") {
+        add(a.intensity, e.size * w * std::max(grown(ft.up), grown(ft.down)), 0.0, 1.0);
+      } else if (at == "position") {
+        add(a.panDeg, e.size * w * grown(ft.position), -kFree, kFree);
+        add(a.tiltDeg, e.size * tiltWave * grown(ft.position), -kFree, kFree);
+      } else if (at == "pan" || at == "tilt") {
+        add(at == "pan" ? a.panDeg : a.tiltDeg, e.size * w * grown(ft.position), -kFree, kFree);
+      } else {
+        const double amount = e.size * w * grown(ft.beam);
+        if (at == "zoom") {
+          float z = a.zoomDeg ? *a.zoomDeg : fieldAngleOf(show, profiles, it->first).value_or(0.0f);
+          if (a.zoomDeg || z > 0.0f) {
+            add(z, amount, 0.1, 179.0);
+            a.zoomDeg = z;
+          }
+        } else if (at == "iris") {
+          add(a.iris, amount, 0.0, 1.0);
+        } else if (at == "frost") {
+          add(a.frost, amount, 0.0, 1.0);
+        } else if (at == "gobo_rotation") {
+          add(a.goboRotationDeg, amount, -kFree, kFree);
+        } else if (at == "prism_rotation") {
+          add(a.prismRotationDeg, amount, -kFree, kFree);
+        }
+      }
+    }
+  }
+}
+
+StageState blendStatesAt(const Show& show, const ProfileSet& profiles, const StageState& from, const StageState& to,
+                         const Cue& cue, double secondsSinceGo) {
+  StageState out = to;
+  for (auto& [id, a] : out) {
+    auto src = from.find(id);
+    if (src == from.end()) continue;
+    a = blendAttributesAt(src->second, a, fixtureTiming(show, cue, id), secondsSinceGo, fieldAngleOf(show, profiles, id));
+  }
+  applyEffects(show, profiles, cue, secondsSinceGo, out);
+  return out;
 }
 
 StageState blendStates(const Show& show, const ProfileSet& profiles, const StageState& from, const StageState& to,
@@ -102,12 +248,7 @@ StageState blendStates(const Show& show, const ProfileSet& profiles, const Stage
   for (auto& [id, a] : out) {
     auto src = from.find(id);
     if (src == from.end()) continue;
-    std::optional<float> field;
-    if (const FixtureDef* f = show.findFixture(id)) {
-      auto p = profiles.find(f->profile);
-      if (p != profiles.end() && p->second) field = p->second->fieldAngleDeg;
-    }
-    a = blendAttributes(src->second, a, progress, field);
+    a = blendAttributes(src->second, a, progress, fieldAngleOf(show, profiles, id));
   }
   return out;
 }
@@ -117,8 +258,7 @@ StageState stateAt(const Show& show, const ProfileSet& profiles, const CueList& 
   assert(cueIndex < list.cues.size() && "stateAt: cue index past the end of the list; use findCue");
   StageState from = cueIndex == 0 ? defaultState(show) : trackedState(show, profiles, list, cueIndex - 1);
   StageState to = trackedState(show, profiles, list, cueIndex);
-  const Cue& cue = list.cues[cueIndex];
-  return blendStates(show, profiles, from, to, fadeProgress(CueTiming{cue.delayS, cue.fadeS}, secondsSinceGo));
+  return blendStatesAt(show, profiles, from, to, list.cues[cueIndex], secondsSinceGo);
 }
 
 Result<size_t> findCue(const CueList& list, const std::string& number) {

@@ -51,4 +51,27 @@ Attributes blendAttributes(const Attributes& from, const Attributes& to, double 
 StageState blendStates(const Show& show, const ProfileSet& profiles, const StageState& from,
                        const StageState& to, double progress);
 
+// --- A cue's own timing (docs/show-format.md, "Timing"). ---
+
+// The times one fixture's parts follow in a cue: intensity up and down, position (pan, tilt),
+// colour (colour and cell colours) and beam (everything else), each the cue's delay and fade
+// unless the cue's timing sets its own, plus the fixture's place in the cue's fan.
+struct FixtureTiming {
+  CueTiming up, down, position, color, beam;
+  FadeCurve curve = FadeCurve::Linear;
+  double endS() const;  // when its last part has finished
+};
+FixtureTiming fixtureTiming(const Show& show, const Cue& cue, int fixtureId);
+// When the last part of the last fixture has finished: the cue's "delay + fade" for follows.
+double cueDurationS(const Show& show, const Cue& cue);
+// A fade curve applied to a linear progress in 0..1 (values outside pass through): linear is p,
+// s-curve is 3p^2 - 2p^3.
+double curveProgress(FadeCurve curve, double linearProgress);
+// One fixture secondsSinceGo into a cue with these times, each part on its own clock and curve.
+Attributes blendAttributesAt(const Attributes& from, const Attributes& to, const FixtureTiming& timing,
+                             double secondsSinceGo, std::optional<float> fieldAngleDeg);
+// The same for a whole stage, each fixture with its own timing in `cue`.
+StageState blendStatesAt(const Show& show, const ProfileSet& profiles, const StageState& from,
+                         const StageState& to, const Cue& cue, double secondsSinceGo);
+
 }  // namespace haze

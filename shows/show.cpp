@@ -15,6 +15,18 @@ const FixtureDef* Show::findFixture(int id) const {
   return nullptr;
 }
 
+const GroupDef* Show::findGroup(const std::string& name) const {
+  for (const GroupDef& g : groups)
+    if (g.name == name) return &g;
+  return nullptr;
+}
+
+const PaletteDef* Show::findPalette(const std::string& name) const {
+  for (const PaletteDef& p : palettes)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
 const CueList* Show::findCueList(const std::string& name) const {
   if (name.empty()) return cueLists.empty() ? nullptr : &cueLists.front();
   for (const CueList& l : cueLists)

@@ -68,6 +68,15 @@ struct CellValues {
   bool operator==(const CellValues&) const = default;
 };
 
+// The palettes a cue's entry for one fixture refers to, one per kind (docs/show-format.md,
+// "Groups and palettes"); "" = none. Resolved when the cue plays, so a changed palette reaches
+// every cue that refers to it.
+struct PaletteRefs {
+  std::string all, position, color, beam;
+  bool empty() const { return all.empty() && position.empty() && color.empty() && beam.empty(); }
+  bool operator==(const PaletteRefs&) const = default;
+};
+
 // The attributes a cue sets for one fixture; unset ones track from earlier cues.
 struct CueValues {
   std::optional<float> intensity, panDeg, tiltDeg, zoomDeg, goboRotationDeg, iris;
@@ -79,7 +88,67 @@ struct CueValues {
   std::optional<std::string> prism;
   std::optional<BladeInsertions> blades;
   std::optional<Shutter> shutter;
+  PaletteRefs palettes;  // laid under the values above when the cue plays
   bool operator==(const CueValues&) const = default;
+};
+
+// A named, ordered selection of fixtures ("Spots SR"); the order is the order of a fan.
+struct GroupDef {
+  std::string name;
+  std::vector<int> fixtures;  // fixture ids, in the group's order
+};
+
+enum class PaletteKind { Position, Color, Beam, All };
+
+// A look many cues share: values per group (laid over one another in the order of Show::groups)
+// and per fixture (laid over those). A palette holds only its kind's attributes.
+struct PaletteDef {
+  std::string name;
+  PaletteKind kind = PaletteKind::All;
+  std::map<std::string, CueValues> groups;  // by group name
+  std::map<int, CueValues> fixtures;        // by fixture id
+};
+
+// Delay and fade of one part of a cue (docs/show-format.md, "Timing"); unset ones are the cue's.
+struct PartTiming {
+  std::optional<double> delayS, fadeS;
+  bool operator==(const PartTiming&) const = default;
+};
+
+enum class FadeCurve { Linear, SCurve };
+
+// A fan: the k-th fixture of the group (from 0, in the group's order) starts k * delayStepS later
+// and fades k * fadeStepS longer than the cue's times for it.
+struct FanTiming {
+  std::string group;
+  double delayStepS = 0.0, fadeStepS = 0.0;
+  bool operator==(const FanTiming&) const = default;
+};
+
+// Timing beyond the cue's one delay and fade: intensity up and down, position, colour and beam
+// each with their own times, a fan across a group, and the curve every fade of the cue follows.
+struct CueTimingDef {
+  std::optional<PartTiming> up, down, position, color, beam;
+  std::optional<FanTiming> fan;
+  FadeCurve curve = FadeCurve::Linear;
+  bool empty() const { return *this == CueTimingDef{}; }
+  bool operator==(const CueTimingDef&) const = default;
+};
+
+enum class EffectShape { Sine, Circle, Square, Ramp, Random };
+
+// A parametric effect that runs on a group while its cue is on stage (docs/show-format.md,
+// "Effects"): the attribute moves by size * w(rate * t + phase), w in -1..1, where t is the time
+// since GO and the k-th of the group's n fixtures has phase phaseDeg + k * spreadDeg / n.
+struct EffectDef {
+  EffectShape shape = EffectShape::Sine;
+  std::string attribute;   // intensity, pan, tilt, zoom, iris, frost, gobo_rotation, prism_rotation; circle: position
+  std::string group;
+  double rateHz = 1.0;     // cycles per second; negative runs the other way
+  double size = 0.0;       // in the attribute's unit (degrees for pan, tilt and circle)
+  double phaseDeg = 0.0, spreadDeg = 0.0;
+  std::uint32_t seed = 0;  // random: which sequence
+  bool operator==(const EffectDef&) const = default;
 };
 
 struct Cue {
@@ -90,6 +159,8 @@ struct Cue {
   std::optional<double> followS;  // empty = wait for the operator
   std::string timecode;           // "hh:mm:ss:ff": `haze live --timecode` fires it then; "" = none
   std::map<int, CueValues> values;  // by fixture id
+  CueTimingDef timing;
+  std::vector<EffectDef> effects;
 };
 
 struct CueList {
@@ -112,19 +183,25 @@ struct FileStamp {
 };
 
 // The newest show format version this haze reads and writes (docs/show-format.md).
-inline constexpr int kShowFormatVersion = 1;
+// Version 2 added groups and palettes; a version-1 file is read as version 2 unchanged.
+inline constexpr int kShowFormatVersion = 2;
 
 struct Show {
   std::filesystem::path file;        // where it was loaded from (paths inside are relative to it)
   std::optional<FileStamp> stamp;    // the file as loaded or last saved; empty for a new show
+  int fileVersion = kShowFormatVersion;  // the format version the file had when read
   std::string venueGltf;             // relative to the show file; "" = no venue (an empty stage)
   AtmosphereDef atmosphere;
   std::vector<CameraDef> cameras;
   std::map<std::string, ProfileRef> profiles;
   std::vector<FixtureDef> fixtures;
+  std::vector<GroupDef> groups;
+  std::vector<PaletteDef> palettes;
   std::vector<CueList> cueLists;
 
   const FixtureDef* findFixture(int id) const;
+  const GroupDef* findGroup(const std::string& name) const;
+  const PaletteDef* findPalette(const std::string& name) const;
   const CueList* findCueList(const std::string& name) const;  // "" = the first list
   std::filesystem::path resolve(const std::string& relative) const;  // against file's folder
 };

@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "shows/cue_number.h"
+#include "shows/effects.h"
+#include "shows/palettes.h"
 #include "shows/timecode.h"
 #include "shows/show_json.h"
 
@@ -461,35 +463,213 @@ void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues&
   }
 }
 
-void readValues(Reader& r, const json& vals, const std::string& vp, Cue& cue) {
+// "palettes": {"position": "Centre", "color": "Red", ...}: one palette name per kind.
+void readPaletteRefs(Reader& r, const json& j, const std::string& p, PaletteRefs& refs) {
+  if (!r.isObject(j, p, "palette names by kind")) return;
+  r.onlyKeys(j, p, {"all", "position", "color", "beam"});
+  r.stringMember(j, p, "all", false, "the name of an \"all\" palette", refs.all, true);
+  r.stringMember(j, p, "position", false, "the name of a position palette", refs.position, true);
+  r.stringMember(j, p, "color", false, "the name of a colour palette", refs.color, true);
+  r.stringMember(j, p, "beam", false, "the name of a beam palette", refs.beam, true);
+}
+
+// One fixture's (or group's) attribute values; `palettes` only where references are allowed
+// (cues: yes; palettes themselves: no, so references cannot form a cycle).
+void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValues& v, bool allowPalettes) {
+  if (allowPalettes)
+    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris", "frost", "prism",
+                      "prism_rotation", "blades", "blade_rotation", "shutter", "cells", "palettes"});
+  else
+    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris", "frost", "prism",
+                      "prism_rotation", "blades", "blade_rotation", "shutter", "cells"});
+  double x = 0;
+  auto num = [&](const char* key, double lo, double hi, const char* what, std::optional<float>& out) {
+    if (const json* j = r.member(a, p, key, false))
+      if (r.number(*j, p + "/" + key, lo, hi, what, x)) out = static_cast<float>(x);
+  };
+  num("intensity", 0.0, 1.0, "an intensity", v.intensity);
+  num("pan", -kInf, kInf, "a pan angle in degrees", v.panDeg);
+  num("tilt", -kInf, kInf, "a tilt angle in degrees", v.tiltDeg);
+  num("zoom", 0.1, 179.0, "a zoom (field angle) in degrees", v.zoomDeg);
+  num("gobo_rotation", -kInf, kInf, "a gobo rotation in degrees", v.goboRotationDeg);
+  num("iris", 0.0, 1.0, "an iris", v.iris);
+  glm::vec3 c{1.0f};
+  if (r.vec3Member(a, p, "color", false, 0.0, 1.0, "a colour component", c)) v.color = c;
+  std::string gobo;
+  if (r.stringMember(a, p, "gobo", false, "a gobo slot name", gobo, true)) v.gobo = gobo;
+  if (const json* cells = r.member(a, p, "cells", false)) readCellValues(r, *cells, p + "/cells", v);
+  readOpticsValues(r, a, p, v);
+  if (allowPalettes)
+    if (const json* refs = r.member(a, p, "palettes", false)) readPaletteRefs(r, *refs, p + "/palettes", v.palettes);
+}
+
+// Values keyed by fixture id, as cues and palettes hold them.
+void readFixtureValues(Reader& r, const json& vals, const std::string& vp, std::map<int, CueValues>& out,
+                       bool allowPalettes) {
   if (!r.isObject(vals, vp, "values by fixture id")) return;
   for (auto it = vals.begin(); it != vals.end(); ++it) {
     const std::string p = vp + "/" + pointerToken(it.key());
     int id = 0;
     if (!readFixtureKey(r, it.key(), p, id)) continue;
-    const json& a = *it;
-    if (!r.isObject(a, p, "attribute values")) continue;
-    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris", "frost", "prism",
-                      "prism_rotation", "blades", "blade_rotation", "shutter", "cells"});
+    if (!r.isObject(*it, p, "attribute values")) continue;
     CueValues v;
+    readAttributeValues(r, *it, p, v, allowPalettes);
+    out[id] = v;
+  }
+}
+
+void readGroups(Reader& r, const json& root, Show& show) {
+  const json* groups = r.member(root, "", "groups", false);
+  if (!groups || !r.isArray(*groups, "/groups", "the groups")) return;
+  for (size_t i = 0; i < groups->size(); ++i) {
+    const json& g = (*groups)[i];
+    const std::string p = "/groups/" + std::to_string(i);
+    GroupDef d;
+    if (r.isObject(g, p, "a group")) {
+      r.onlyKeys(g, p, {"name", "fixtures"});
+      r.stringMember(g, p, "name", true, "the group's name", d.name, true);
+      if (const json* f = r.member(g, p, "fixtures", true); f && r.isArray(*f, p + "/fixtures", "the group's fixture ids"))
+        for (size_t k = 0; k < f->size(); ++k) {
+          int id = 0;
+          if (r.integer((*f)[k], p + "/fixtures/" + std::to_string(k), 1, INT_MAX, "a fixture id", id))
+            d.fixtures.push_back(id);
+        }
+    }
+    show.groups.push_back(std::move(d));  // kept when broken, so /groups/N keeps its index
+  }
+}
+
+void readPalettes(Reader& r, const json& root, Show& show) {
+  const json* pals = r.member(root, "", "palettes", false);
+  if (!pals || !r.isArray(*pals, "/palettes", "the palettes")) return;
+  for (size_t i = 0; i < pals->size(); ++i) {
+    const json& pj = (*pals)[i];
+    const std::string p = "/palettes/" + std::to_string(i);
+    PaletteDef d;
+    if (r.isObject(pj, p, "a palette")) {
+      r.onlyKeys(pj, p, {"name", "kind", "groups", "fixtures"});
+      r.stringMember(pj, p, "name", true, "the palette's name", d.name, true);
+      std::string kind;
+      if (r.stringMember(pj, p, "kind", true, "a palette kind", kind, true)) {
+        if (auto k = paletteKindFromName(kind))
+          d.kind = *k;
+        else
+          r.problem(p + "/kind", "unknown palette kind \"" + kind + "\"; expected position, color, beam or all");
+      }
+      if (const json* g = r.member(pj, p, "groups", false); g && r.isObject(*g, p + "/groups", "values by group name"))
+        for (auto it = g->begin(); it != g->end(); ++it) {
+          const std::string gp = p + "/groups/" + pointerToken(it.key());
+          if (!r.isObject(*it, gp, "attribute values")) continue;
+          CueValues v;
+          readAttributeValues(r, *it, gp, v, false);
+          d.groups[it.key()] = v;
+        }
+      if (const json* f = r.member(pj, p, "fixtures", false)) readFixtureValues(r, *f, p + "/fixtures", d.fixtures, false);
+    }
+    show.palettes.push_back(std::move(d));
+  }
+}
+
+// "timing": {"up", "down", "position", "color", "beam": {"delay", "fade"}, "fan": {"group",
+// "delay", "fade"}, "curve": "linear" | "s-curve"} (docs/show-format.md, "Timing").
+void readTiming(Reader& r, const json& j, const std::string& p, CueTimingDef& t) {
+  if (!r.isObject(j, p, "the cue's timing")) return;
+  r.onlyKeys(j, p, {"up", "down", "position", "color", "beam", "fan", "curve"});
+  double x = 0;
+  auto part = [&](const char* key, std::optional<PartTiming>& out) {
+    const json* pj = r.member(j, p, key, false);
+    const std::string pp = p + "/" + key;
+    if (!pj || !r.isObject(*pj, pp, "a delay and fade")) return;
+    r.onlyKeys(*pj, pp, {"delay", "fade"});
+    PartTiming pt;
+    if (const json* d = r.member(*pj, pp, "delay", false))
+      if (r.number(*d, pp + "/delay", 0.0, kInf, "a delay in seconds", x)) pt.delayS = x;
+    if (const json* f = r.member(*pj, pp, "fade", false))
+      if (r.number(*f, pp + "/fade", 0.0, kInf, "a fade time in seconds", x)) pt.fadeS = x;
+    out = pt;
+  };
+  part("up", t.up);
+  part("down", t.down);
+  part("position", t.position);
+  part("color", t.color);
+  part("beam", t.beam);
+  if (const json* f = r.member(j, p, "fan", false); f && r.isObject(*f, p + "/fan", "a fan across a group")) {
+    const std::string fp = p + "/fan";
+    r.onlyKeys(*f, fp, {"group", "delay", "fade"});
+    FanTiming fan;
+    r.stringMember(*f, fp, "group", true, "the name of a group in /groups", fan.group, true);
+    if (const json* d = r.member(*f, fp, "delay", false))
+      if (r.number(*d, fp + "/delay", 0.0, kInf, "a delay step in seconds per fixture", x)) fan.delayStepS = x;
+    if (const json* d = r.member(*f, fp, "fade", false))
+      if (r.number(*d, fp + "/fade", 0.0, kInf, "a fade step in seconds per fixture", x)) fan.fadeStepS = x;
+    t.fan = fan;
+  }
+  std::string curve;
+  if (r.stringMember(j, p, "curve", false, "a fade curve", curve, true)) {
+    if (curve == "linear" || curve == "s-curve")
+      t.curve = curve == "linear" ? FadeCurve::Linear : FadeCurve::SCurve;
+    else
+      r.problem(p + "/curve", "unknown fade curve \"" + curve + "\"; expected linear or s-curve");
+  }
+}
+
+constexpr const char* kEffectAttributes[] = {"intensity", "pan", "tilt", "zoom", "iris", "frost", "gobo_rotation",
+                                             "prism_rotation"};
+
+// "effects": [{"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed"}]
+void readEffects(Reader& r, const json& j, const std::string& ep, std::vector<EffectDef>& out) {
+  if (!r.isArray(j, ep, "the cue's effects")) return;
+  for (size_t i = 0; i < j.size(); ++i) {
+    const json& e = j[i];
+    const std::string p = ep + "/" + std::to_string(i);
+    if (!r.isObject(e, p, "an effect")) continue;
+    r.onlyKeys(e, p, {"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed"});
+    EffectDef d;
+    bool ok = true;
+    std::string shape;
+    if (r.stringMember(e, p, "shape", true, "an effect shape", shape, true)) {
+      const std::pair<const char*, EffectShape> shapes[] = {{"sine", EffectShape::Sine}, {"circle", EffectShape::Circle},
+                                                            {"square", EffectShape::Square}, {"ramp", EffectShape::Ramp},
+                                                            {"random", EffectShape::Random}};
+      bool known = false;
+      for (const auto& [name, s] : shapes)
+        if (shape == name) {
+          known = true;
+          d.shape = s;
+        }
+      if (!known) {
+        r.problem(p + "/shape", "unknown effect shape \"" + shape + "\"; expected sine, circle, square, ramp or random");
+        ok = false;
+      }
+    } else {
+      ok = false;
+    }
+    if (d.shape == EffectShape::Circle) {
+      d.attribute = "position";
+      if (const json* a = r.member(e, p, "attribute", false); a && !(a->is_string() && *a == "position"))
+        r.problem(p + "/attribute", "a circle moves pan and tilt together; expected \"position\" or no attribute");
+    } else if (ok && r.stringMember(e, p, "attribute", true, "the attribute the effect moves", d.attribute, true)) {
+      bool known = false;
+      for (const char* a : kEffectAttributes) known = known || d.attribute == a;
+      if (!known)
+        r.problem(p + "/attribute", "an effect cannot move \"" + d.attribute + "\"; expected intensity, pan, tilt, zoom, "
+                                    "iris, frost, gobo_rotation or prism_rotation (or a circle on position)");
+    }
+    r.stringMember(e, p, "group", true, "the name of a group in /groups", d.group, true);
     double x = 0;
-    auto num = [&](const char* key, double lo, double hi, const char* what, std::optional<float>& out) {
-      if (const json* j = r.member(a, p, key, false))
-        if (r.number(*j, p + "/" + key, lo, hi, what, x)) out = static_cast<float>(x);
-    };
-    num("intensity", 0.0, 1.0, "an intensity", v.intensity);
-    num("pan", -kInf, kInf, "a pan angle in degrees", v.panDeg);
-    num("tilt", -kInf, kInf, "a tilt angle in degrees", v.tiltDeg);
-    num("zoom", 0.1, 179.0, "a zoom (field angle) in degrees", v.zoomDeg);
-    num("gobo_rotation", -kInf, kInf, "a gobo rotation in degrees", v.goboRotationDeg);
-    num("iris", 0.0, 1.0, "an iris", v.iris);
-    glm::vec3 c{1.0f};
-    if (r.vec3Member(a, p, "color", false, 0.0, 1.0, "a colour component", c)) v.color = c;
-    std::string gobo;
-    if (r.stringMember(a, p, "gobo", false, "a gobo slot name", gobo, true)) v.gobo = gobo;
-    if (const json* cells = r.member(a, p, "cells", false)) readCellValues(r, *cells, p + "/cells", v);
-    readOpticsValues(r, a, p, v);
-    cue.values[id] = v;
+    if (const json* v = r.member(e, p, "rate", true))
+      if (r.number(*v, p + "/rate", -100.0, 100.0, "a rate in cycles per second", x)) d.rateHz = x;
+    if (const json* v = r.member(e, p, "size", true))
+      if (r.number(*v, p + "/size", 0.0, 360.0, "a size in the attribute's unit", x)) d.size = x;
+    if (const json* v = r.member(e, p, "phase", false))
+      if (r.number(*v, p + "/phase", -3600.0, 3600.0, "a phase in degrees", x)) d.phaseDeg = x;
+    if (const json* v = r.member(e, p, "spread", false))
+      if (r.number(*v, p + "/spread", -3600.0, 3600.0, "a phase spread across the group in degrees", x)) d.spreadDeg = x;
+    if (const json* v = r.member(e, p, "seed", false)) {
+      int seed = 0;
+      if (r.integer(*v, p + "/seed", 0, INT_MAX, "a random seed", seed)) d.seed = static_cast<std::uint32_t>(seed);
+    }
+    out.push_back(d);
   }
 }
 
@@ -510,7 +690,7 @@ void readCueLists(Reader& r, const json& root, Show& show) {
           const std::string p = lp + "/cues/" + std::to_string(ci);
           Cue cue;
           if (r.isObject(c, p, "a cue")) {
-            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "timecode", "values"});
+            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "timecode", "timing", "effects", "values"});
             if (r.stringMember(c, p, "number", true, "a cue number (a decimal string like \"1.5\")", cue.number, true) &&
                 !isCueNumber(cue.number)) {
               r.problem(p + "/number", "expected a cue number: digits with an optional decimal part, like \"1\" "
@@ -537,7 +717,9 @@ void readCueLists(Reader& r, const json& root, Show& show) {
                                          "00..29), got \"" + cue.timecode + "\"");
               cue.timecode.clear();
             }
-            if (const json* j = r.member(c, p, "values", false)) readValues(r, *j, p + "/values", cue);
+            if (const json* j = r.member(c, p, "timing", false)) readTiming(r, *j, p + "/timing", cue.timing);
+            if (const json* j = r.member(c, p, "effects", false)) readEffects(r, *j, p + "/effects", cue.effects);
+            if (const json* j = r.member(c, p, "values", false)) readFixtureValues(r, *j, p + "/values", cue.values, true);
           }
           list.cues.push_back(std::move(cue));
         }
@@ -547,9 +729,14 @@ void readCueLists(Reader& r, const json& root, Show& show) {
   }
 }
 
-// Where a future format version's migrations go: each step rewrites the JSON of version v into
-// version v + 1 in place. Version 1 is the first, so there is nothing to migrate yet.
-bool migrate(json& /*root*/, int version) { return version == kShowFormatVersion; }
+// Each step rewrites the JSON of version v into version v + 1 in place; false for a version this
+// haze never knew. 1 -> 2: version 2 only added `groups` and `palettes` (both optional), so a
+// version-1 document is a version-2 document as it stands.
+bool migrate(json& root, int version) {
+  if (version < 1 || version > kShowFormatVersion) return false;
+  for (int v = version; v < kShowFormatVersion; ++v) root["version"] = v + 1;
+  return true;
+}
 
 }  // namespace
 
@@ -665,13 +852,32 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
     } else {
       return out;
     }
-    r.onlyKeys(root, "", {"format", "version", "venue", "atmosphere", "cameras", "profiles", "fixtures", "cue_lists"});
+    out.show.fileVersion = version;
+    if (version < 2)
+      for (const char* key : {"groups", "palettes"})
+        if (root.contains(key))
+          r.problem(std::string("/") + key, std::string("\"") + key + "\" needs format version 2; this file says " +
+                                                std::to_string(version) + " (set \"version\": 2)");
+    r.onlyKeys(root, "", {"format", "version", "venue", "atmosphere", "cameras", "profiles", "fixtures", "groups",
+                          "palettes", "cue_lists"});
     readVenue(r, root, out.show);
     readAtmosphere(r, root, out.show);
     readCameras(r, root, out.show);
     readProfiles(r, root, out.show);
     readFixtures(r, root, out.show);
+    readGroups(r, root, out.show);
+    readPalettes(r, root, out.show);
     readCueLists(r, root, out.show);
+    if (version < 2)
+      for (size_t l = 0; l < out.show.cueLists.size(); ++l)
+        for (size_t c = 0; c < out.show.cueLists[l].cues.size(); ++c) {
+          const Cue& cue = out.show.cueLists[l].cues[c];
+          const std::string p = "/cue_lists/" + std::to_string(l) + "/cues/" + std::to_string(c);
+          const std::string need = " needs format version 2; this file says " + std::to_string(version) +
+                                   " (set \"version\": 2)";
+          if (!cue.timing.empty()) r.problem(p + "/timing", "\"timing\"" + need);
+          if (!cue.effects.empty()) r.problem(p + "/effects", "\"effects\"" + need);
+        }
   } catch (const std::exception& e) {
     // Every access above checks types first; this is a last guard so nothing escapes the library.
     r.problem("", std::string("the show cannot be read: ") + e.what());
@@ -683,6 +889,8 @@ Result<Show> loadShow(const std::filesystem::path& file) {
   auto bytes = readShowBytes(file);
   if (!bytes) return bytes.error();
   ShowParse parse = parseShowText(*bytes, file);
+  // A reference that names nothing would play as nothing, in silence: refuse it here as well.
+  if (parse.problems.empty()) parse.problems = checkGroupsAndPalettes(parse.show);
   if (!parse.problems.empty()) {
     Error first = parse.problems.front();
     if (parse.problems.size() > 1)

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "shows/cue_number.h"
+#include "shows/palettes.h"
 #include "shows/timecode.h"
 #include "shows/show_json.h"
 
@@ -164,7 +165,9 @@ struct Checker {
   }
 
   void values(const std::string& p, const Cue& cue) {
-    for (const auto& [id, v] : cue.values) {
+    for (const auto& [id, given] : cue.values) {
+      // Palette values are checked against each fixture that plays them, at the cue that does.
+      const CueValues v = resolveValues(show, id, given);
       const std::string vp = p + "/values/" + std::to_string(id);
       const FixtureDef* f = show.findFixture(id);
       if (!f) {
@@ -271,6 +274,8 @@ std::vector<Error> validateShow(const Show& show, const ProfileSet& profiles) {
   c.cameras();
   c.fixtures();
   c.cueLists();
+  std::vector<Error> refs = checkGroupsAndPalettes(show);
+  c.problems.insert(c.problems.end(), refs.begin(), refs.end());
   return std::move(c.problems);
 }
 

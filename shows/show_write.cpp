@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "shows/effects.h"
+#include "shows/palettes.h"
 #include "shows/show_json.h"
 
 namespace haze {
@@ -104,6 +106,33 @@ ojson valuesJson(const CueValues& v) {
   }
   if (v.bladeRotationDeg) o["blade_rotation"] = tidy(*v.bladeRotationDeg);
   if (v.shutter) o["shutter"] = shutterJson(*v.shutter);
+  if (!v.palettes.empty()) {
+    ojson refs = ojson::object();
+    if (!v.palettes.all.empty()) refs["all"] = v.palettes.all;
+    if (!v.palettes.position.empty()) refs["position"] = v.palettes.position;
+    if (!v.palettes.color.empty()) refs["color"] = v.palettes.color;
+    if (!v.palettes.beam.empty()) refs["beam"] = v.palettes.beam;
+    o["palettes"] = refs;
+  }
+  return o;
+}
+
+ojson timingJson(const CueTimingDef& t) {
+  ojson o = ojson::object();
+  auto part = [&](const char* key, const std::optional<PartTiming>& p) {
+    if (!p) return;
+    ojson j = ojson::object();
+    if (p->delayS) j["delay"] = *p->delayS;
+    if (p->fadeS) j["fade"] = *p->fadeS;
+    o[key] = j;
+  };
+  part("up", t.up);
+  part("down", t.down);
+  part("position", t.position);
+  part("color", t.color);
+  part("beam", t.beam);
+  if (t.fan) o["fan"] = ojson{{"group", t.fan->group}, {"delay", t.fan->delayStepS}, {"fade", t.fan->fadeStepS}};
+  if (t.curve != FadeCurve::Linear) o["curve"] = "s-curve";
   return o;
 }
 
@@ -163,6 +192,31 @@ ojson showJson(const Show& s) {
     fixtures.push_back(o);
   }
   root["fixtures"] = fixtures;
+  if (!s.groups.empty()) {
+    ojson groups = ojson::array();
+    for (const GroupDef& g : s.groups) groups.push_back(ojson{{"name", g.name}, {"fixtures", g.fixtures}});
+    root["groups"] = groups;
+  }
+  if (!s.palettes.empty()) {
+    ojson pals = ojson::array();
+    for (const PaletteDef& p : s.palettes) {
+      ojson o = ojson::object();
+      o["name"] = p.name;
+      o["kind"] = paletteKindName(p.kind);
+      if (!p.groups.empty()) {
+        ojson g = ojson::object();
+        for (const auto& [name, v] : p.groups) g[name] = valuesJson(v);
+        o["groups"] = g;
+      }
+      if (!p.fixtures.empty()) {
+        ojson f = ojson::object();
+        for (const auto& [id, v] : p.fixtures) f[std::to_string(id)] = valuesJson(v);
+        o["fixtures"] = f;
+      }
+      pals.push_back(o);
+    }
+    root["palettes"] = pals;
+  }
   ojson lists = ojson::array();
   for (const CueList& l : s.cueLists) {
     ojson cues = ojson::array();
@@ -174,6 +228,23 @@ ojson showJson(const Show& s) {
       o["delay"] = c.delayS;
       o["follow"] = c.followS ? ojson(*c.followS) : ojson(nullptr);
       if (!c.timecode.empty()) o["timecode"] = c.timecode;
+      if (!c.timing.empty()) o["timing"] = timingJson(c.timing);
+      if (!c.effects.empty()) {
+        ojson effects = ojson::array();
+        for (const EffectDef& e : c.effects) {
+          ojson j = ojson::object();
+          j["shape"] = effectShapeName(e.shape);
+          if (e.shape != EffectShape::Circle) j["attribute"] = e.attribute;
+          j["group"] = e.group;
+          j["rate"] = e.rateHz;
+          j["size"] = e.size;
+          if (e.phaseDeg != 0.0) j["phase"] = e.phaseDeg;
+          if (e.spreadDeg != 0.0) j["spread"] = e.spreadDeg;
+          if (e.shape == EffectShape::Random) j["seed"] = e.seed;
+          effects.push_back(j);
+        }
+        o["effects"] = effects;
+      }
       ojson vals = ojson::object();
       for (const auto& [id, v] : c.values) vals[std::to_string(id)] = valuesJson(v);
       o["values"] = vals;

@@ -129,6 +129,11 @@ class DeleteFixtures final : public EditCommand {
     for (size_t i = 0; i < t.show.fixtures.size(); ++i)
       if (doomed(t.show.fixtures[i].id)) removed_.emplace_back(i, t.show.fixtures[i]);
     std::erase_if(t.show.fixtures, [&](const FixtureDef& f) { return doomed(f.id); });
+    // Groups and palettes name fixtures too: a deleted one leaves them (undo puts them back).
+    groups_ = t.show.groups;
+    palettes_ = t.show.palettes;
+    for (GroupDef& g : t.show.groups) std::erase_if(g.fixtures, doomed);
+    for (PaletteDef& p : t.show.palettes) std::erase_if(p.fixtures, [&](const auto& e) { return doomed(e.first); });
     for (size_t l = 0; l < t.show.cueLists.size(); ++l)
       for (size_t c = 0; c < t.show.cueLists[l].cues.size(); ++c) {
         auto& values = t.show.cueLists[l].cues[c].values;
@@ -153,6 +158,8 @@ class DeleteFixtures final : public EditCommand {
   }
   void undo(EditTarget& t) override {
     for (const auto& [index, f] : removed_) t.show.fixtures.insert(t.show.fixtures.begin() + static_cast<long>(index), f);
+    t.show.groups = groups_;
+    t.show.palettes = palettes_;
     for (const CueValue& v : cueValues_) t.show.cueLists[v.list].cues[v.cue].values[v.id] = v.values;
     for (const auto& [id, v] : programmer_) t.programmer.values[id] = v;
   }
@@ -167,6 +174,8 @@ class DeleteFixtures final : public EditCommand {
   std::vector<std::pair<size_t, FixtureDef>> removed_;  // ascending index: reinserting in order restores places
   std::vector<CueValue> cueValues_;
   std::map<int, CueValues> programmer_;
+  std::vector<GroupDef> groups_;
+  std::vector<PaletteDef> palettes_;
 };
 
 // Move and rotate: one vec3 member of a fixture, before and after.

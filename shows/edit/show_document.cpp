@@ -58,7 +58,7 @@ bool sameCues(const std::vector<CueList>& a, const std::vector<CueList>& b) {
     for (size_t i = 0; i < a[l].cues.size(); ++i) {
       const Cue &x = a[l].cues[i], &y = b[l].cues[i];
       if (x.number != y.number || x.label != y.label || x.fadeS != y.fadeS || x.delayS != y.delayS ||
-          x.followS != y.followS || x.values != y.values)
+          x.followS != y.followS || x.timing != y.timing || x.effects != y.effects || x.values != y.values)
         return false;
     }
   }
@@ -268,7 +268,8 @@ double ShowDocument::fadeProgress(double nowS) const {
   const auto c = currentCue();
   if (!list || !c || *c >= list->cues.size()) return 1.0;
   const Cue& cue = list->cues[*c];
-  return haze::fadeProgress(CueTiming{cue.delayS, cue.fadeS}, nowS - lastGoAtS_);
+  // The whole cue, its last part and the end of its fan included.
+  return haze::fadeProgress(CueTiming{cue.delayS, cueDurationS(show_, cue) - cue.delayS}, nowS - lastGoAtS_);
 }
 
 bool ShowDocument::fading(double nowS) const { return player_ && player_->fading(nowS); }

@@ -49,6 +49,7 @@ else
   fail=$((fail + 1))
 fi
 valid "$data/valid.haze.json"
+valid "$data/palettes.haze.json"
 
 broken overlap.haze.json /fixtures/1/patch/address /fixtures/2/patch/address
 broken bad-cues.haze.json /cue_lists/0/cues/1/fade /cue_lists/0/cues/3/delay /cue_lists/0/cues/3/follow \
@@ -56,6 +57,9 @@ broken bad-cues.haze.json /cue_lists/0/cues/1/fade /cue_lists/0/cues/3/delay /cu
   /cue_lists/0/cues/2/values/7 /cue_lists/0/cues/3/number
 broken unknown-profile.haze.json /profiles/spot /venue/gltf /fixtures/0/profile /fixtures/1/id
 broken newer-version.haze.json /version
+# A group naming an unknown fixture, a reference to a palette that is not there.
+broken bad-palettes.haze.json /groups/0/fixtures/2 /cue_lists/0/cues/0/values/1/palettes/position
+broken palette-in-palette.haze.json /palettes/0/fixtures/2/palettes
 broken not-json.haze.json "line 4, column 12"
 
 # Usage errors exit 2 with one line on stderr.

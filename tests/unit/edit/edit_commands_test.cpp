@@ -9,6 +9,7 @@
 
 #include "shows/edit/edit_commands.h"
 #include "shows/playback.h"
+#include "shows/palettes.h"
 #include "shows/show_json.h"
 #include "unit/shows/show_test_data.h"
 
@@ -153,6 +154,22 @@ TEST(EditFixtures, DeleteTakesTheirCueAndProgrammerValuesAndUndoPutsThemBackInPl
   EXPECT_EQ(b.show.fixtures.size(), 1u);
   expectRefused(b, deleteFixtures({2, 99}), "99");
   expectRefused(b, deleteFixtures({}), "at least one");
+}
+
+TEST(EditFixtures, DeleteTakesTheFixtureOutOfGroupsAndPalettesAndUndoPutsItBack) {
+  Bench b;
+  b.show.groups.push_back(GroupDef{"Spots", {1, 2}});
+  PaletteDef centre{"Centre", PaletteKind::Position, {{"Spots", CueValues{.panDeg = 5.0f}}},
+                    {{2, CueValues{.panDeg = 7.0f}}}};
+  b.show.palettes.push_back(centre);
+  b.show.cueLists[0].cues[0].values[1].palettes.position = "Centre";
+  expectRoundTrip(b, deleteFixtures({2}));
+  EXPECT_EQ(b.show.groups[0].fixtures, std::vector<int>{1});
+  EXPECT_FALSE(b.show.palettes[0].fixtures.count(2));
+  EXPECT_TRUE(checkGroupsAndPalettes(b.show).empty());  // the show still loads after a save
+  ASSERT_TRUE(b.history.undo(b.target));
+  EXPECT_EQ(b.show.groups[0].fixtures, (std::vector<int>{1, 2}));
+  EXPECT_TRUE(b.show.palettes[0].fixtures.count(2));
 }
 
 TEST(EditFixtures, MoveAndRotateAndAFoldedDragUndoInOneStep) {

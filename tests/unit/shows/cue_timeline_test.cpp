@@ -27,7 +27,7 @@ CueList demoLikeList() {
 
 TEST(CueTimeline, HoldsAfterManualCuesAndFollowsByThemselves) {
   const CueList list = demoLikeList();
-  const CueTimeline t = playCueRange(list, 0, 5, 2.0);
+  const CueTimeline t = playCueRange(Show{}, list, 0, 5, 2.0);
   ASSERT_EQ(t.gos.size(), 6u);
   const double at[] = {0, 7, 15, 27, 32, 39};  // 0+5+2, 7+6+2, 15+2+8+2, 27+3+follow 2, 32+5+2
   const bool byFollow[] = {false, false, false, false, true, false};
@@ -41,10 +41,10 @@ TEST(CueTimeline, HoldsAfterManualCuesAndFollowsByThemselves) {
 
 TEST(CueTimeline, ARangeEndingOnAFollowStopsWhenItWouldFire) {
   const CueList list = demoLikeList();
-  const CueTimeline t = playCueRange(list, 3, 3, 10.0);  // cue 4 alone: fade 3, follow 2
+  const CueTimeline t = playCueRange(Show{}, list, 3, 3, 10.0);  // cue 4 alone: fade 3, follow 2
   ASSERT_EQ(t.gos.size(), 1u);
   EXPECT_DOUBLE_EQ(t.endS, 5.0);
-  const CueTimeline single = playCueRange(list, 1, 1, 0.0);  // cue 2, no hold: its fade only
+  const CueTimeline single = playCueRange(Show{}, list, 1, 1, 0.0);  // cue 2, no hold: its fade only
   EXPECT_DOUBLE_EQ(single.endS, 6.0);
 }
 
@@ -52,7 +52,7 @@ TEST(CueTimeline, DrivesThePlayerOntoTheCuesItNames) {
   const CueList list = demoLikeList();
   Show show;
   ProfileSet profiles;
-  const CueTimeline t = playCueRange(list, 1, 5, 1.0);
+  const CueTimeline t = playCueRange(Show{}, list, 1, 5, 1.0);
   CuePlayer player(show, profiles, list);
   player.jumpTo(0, 0.0);
   for (const CueGo& go : t.gos) {

@@ -126,7 +126,7 @@ TEST(ShowIo, WrittenTextIsDiffable) {
   EXPECT_LT(text.find("\"atmosphere\""), text.find("\"cameras\""));
   EXPECT_LT(text.find("\"profiles\""), text.find("\"fixtures\""));
   EXPECT_LT(text.find("\"fixtures\""), text.find("\"cue_lists\""));
-  EXPECT_NE(text.find("\n  \"version\": 1,\n"), std::string::npos);
+  EXPECT_NE(text.find("\n  \"version\": 2,\n"), std::string::npos);  // a version-1 file saves as version 2
   EXPECT_NE(text.find("\"scattering\": 0.03,"), std::string::npos) << text;
   EXPECT_NE(text.find("\"color\": [1, 0.8, 0.6]"), std::string::npos);
   EXPECT_NE(text.find("\"position\": [-3, 7, 0]"), std::string::npos);
@@ -146,7 +146,7 @@ TEST(ShowIo, UnknownVersionsAreRefusedClearly) {
   ASSERT_EQ(p.problems.size(), 1u);
   EXPECT_EQ(p.problems[0].place, "/version");
   EXPECT_EQ(p.problems[0].message,
-            "this show has format version 7, newer than this haze reads (up to 1); open it with a newer haze");
+            "this show has format version 7, newer than this haze reads (up to 2); open it with a newer haze");
 }
 
 TEST(ShowIo, LoadShowFailsWithTheFirstProblemAndCountsTheRest) {
