@@ -2,6 +2,7 @@
 // lit fixture). This is the only place where shows meet the renderer.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -24,6 +25,8 @@ struct FrameOptions {
   // Cells of one fixture that share a light map drawn as one beam (docs/cells.md, "Cost").
   bool mergeCells = false;
   std::optional<FrameTime> time;  // none: a still
+  // The medium's density field at the frame's time (app/atmosphere_field.h); none: uniform.
+  std::shared_ptr<const DensityField> density;
 };
 
 // cameraName "" = the show's first camera (or a default view of the stage when it has none).
