@@ -287,6 +287,10 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   const double exposureS = std::clamp(gui.frameMs / 1000.0, 1.0 / 120.0, 0.1);
   FrameOptions frameOptions;
   if (flash) frameOptions.time = FrameTime{gui.nowS, exposureS};
+  std::vector<std::string> densityWarnings;
+  frameOptions.density = gui.atmosphere.at(gui.doc->show(), gui.doc->venue().boundsMin, gui.doc->venue().boundsMax, 0.0,
+                                           densityWarnings);
+  for (const std::string& w : densityWarnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
   auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "", frameOptions);
   if (!frameState) return frameState.error();
   frameState->camera = gui.cameraState();
