@@ -46,6 +46,22 @@ with "$tmp/neg.haze.json" '{"hazers": [{"position": [0, 1, 0], "output": -2}]}'
 "$haze" render "$tmp/neg.haze.json" --width 80 --height 45 -o "$tmp/n.pfm" >"$tmp/out" 2>&1; rc=$?
 check "a negative output is refused naming its place" '[ $rc -ne 0 ] && grep -q "/atmosphere/density/hazers/0/output" "$tmp/out" && [ ! -e "$tmp/n.pfm" ]'
 
+# The schema knows every key (ajv, as tests/cli/show_schema.sh runs it), and refuses a grid too large.
+ajv=$root/tests/node/node_modules/.bin/ajv
+if [ -x "$ajv" ]; then
+  with "$tmp/full.haze.json" '{"base": 0.3, "grid": [32, 16, 24], "bounds": [[-5, 0, -5], [5, 6, 5]],
+    "air_flow": [0.1, 0, -0.2], "mixing": 0.08, "dissipation": 0.01, "warmup": 30, "still": true,
+    "fog": {"density": 4, "height": 0.4, "falloff": 0.25},
+    "boxes": [{"min": [-1, 0, -1], "max": [1, 2, 1], "density": 2.5}],
+    "hazers": [{"position": [4, 0.3, -4], "direction": [-1, 0.2, 0.5], "output": 1.5, "spread": 40, "speed": 3}]}'
+  schema() { "$ajv" validate --spec=draft2020 -c ajv-formats --strict=true -s "$root/schemas/show.schema.json" -d "$1" >/dev/null 2>&1; }
+  check "the schema takes every density key" 'schema "$tmp/full.haze.json"'
+  check "the schema refuses a grid too large" '! schema "$tmp/big.haze.json"'
+  check "haze validate takes the same show" '"$haze" validate "$tmp/full.haze.json" >/dev/null 2>&1'
+else
+  fail=$((fail + 1)); echo "FAIL: ajv is missing from tests/node/node_modules; run 'npm ci' in tests/node"
+fi
+
 "$haze" bench --fixtures 2 --density 16 --width 160 --height 90 --frames 1 --json >"$tmp/bench.json" 2>"$tmp/err"
 check "bench --density gives the ratio ($(cat "$tmp/err"))" \
   'python3 -c "import json,sys; d=json.load(open(sys.argv[1]))[\"density\"]; sys.exit(not (d[\"grid\"] == 16 and d[\"ratio_frame\"] > 0 and d[\"median_frame_ms\"] > 0))" "$tmp/bench.json"'
