@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <thread>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -30,6 +31,19 @@ gl::Texture texture3D(const char* label, int w, int h, int d, const float* data)
   for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
     glTextureParameteri(t.id(), wrap, GL_CLAMP_TO_EDGE);
   return t;
+}
+
+// fn(k) for k in [0, n), over the machine's threads: each k writes texels of its own, so the
+// maps are the same whatever the thread count.
+void parallelFor(int n, const std::function<void(int)>& fn) {
+  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, std::max(n, 1));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back([&, t] {
+      for (int k = t; k < n; k += threads) fn(k);
+    });
+  for (int k = 0; k < n; k += threads) fn(k);
+  for (std::thread& t : pool) t.join();
 }
 
 float farthestCornerM(const glm::vec3& from, const DensityField& f) {
@@ -80,7 +94,7 @@ void DensityResources::update(const FrameState& frame, float aspect, const BeamR
     const int nz = kEyeSlices;
     scratch_.assign(static_cast<size_t>(nu) * nv * nz, 0.0f);
     const float dz = pathDepth_ / static_cast<float>(nz - 1);
-    for (int j = 0; j < nv; ++j)
+    parallelFor(nv, [&](int j) {
       for (int i = 0; i < nu; ++i) {
         const glm::vec2 ndc((i + 0.5f) / nu * 2.0f - 1.0f, (j + 0.5f) / nv * 2.0f - 1.0f);
         const glm::vec3 v = forward_ + ndc.x * rightTan_ + ndc.y * upTan_;
@@ -93,6 +107,7 @@ void DensityResources::update(const FrameState& frame, float aspect, const BeamR
           scratch_[(static_cast<size_t>(k) * nv + j) * nu + i] = path * perLength;
         }
       }
+    });
     eyePath_ = texture3D("density_eye_path", nu, nv, nz, scratch_.data());
     backgroundPath_ = field->integral(eye_, eye_ + forward_ * far);
     eyeKey_ = ek;
@@ -114,8 +129,8 @@ void DensityResources::update(const FrameState& frame, float aspect, const BeamR
     tilesDown_ = (n + tiles_ - 1) / tiles_;
     const int w = tiles_ * side_, h = tilesDown_ * side_;
     scratch_.assign(static_cast<size_t>(w) * h * slices_, 0.0f);
-    for (int i = 0; i < n; ++i) {
-      if (!beams.drawn(i)) continue;
+    parallelFor(n, [&](int i) {
+      if (!beams.drawn(i)) return;
       const GpuBeam& g = beams.beams()[static_cast<size_t>(i)];
       const glm::vec3 lens(g.lensPos), xb(g.xb), yb(g.yb), zb(g.zb);
       const float reach = 1.0f / std::max(g.lens.w, 1e-6f);
@@ -132,7 +147,7 @@ void DensityResources::update(const FrameState& frame, float aspect, const BeamR
             scratch_[(static_cast<size_t>(k) * h + y0 + bj) * w + x0 + ai] = path;
           }
         }
-    }
+    });
     lensPath_ = texture3D("density_lens_path", w, h, slices_, scratch_.data());
     lensKey_ = lk;
   }
