@@ -57,6 +57,17 @@ Venue benchVenue(int fixtures) {
   return v;
 }
 
+DensitySpec benchDensity(int cellsPerSide) {
+  DensitySpec d;
+  d.base = 0.4f;
+  d.grid[0] = d.grid[1] = d.grid[2] = cellsPerSide;
+  d.airFlowMps = {0.1f, 0.0f, 0.05f};
+  d.hazers.push_back({.positionM = {-8.0f, 0.3f, 0.0f}, .direction = {1.0f, 0.15f, 0.0f}, .output = 3.0f,
+                      .spreadDeg = 30.0f, .speedMps = 3.0f});
+  d.warmupS = 60.0;
+  return d;
+}
+
 FrameState benchFrame(int fixtures) {
   const BenchLayout l = benchLayout(fixtures);
   FrameState f;

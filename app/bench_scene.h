@@ -5,6 +5,7 @@
 // comparison.
 #pragma once
 
+#include "atmosphere/density_spec.h"
 #include "renderer/scene/frame_state.h"
 #include "renderer/scene/venue.h"
 
@@ -12,6 +13,9 @@ namespace haze {
 
 Venue benchVenue(int fixtures);
 FrameState benchFrame(int fixtures);
+// `haze bench --density N`'s field: thin haze (D = 0.4) and one hazer at the deck's stage-left
+// edge blowing across the stage, on N^3 cells over the venue, 60 s after it started.
+DensitySpec benchDensity(int cellsPerSide);
 // The accuracy study's scene (after Dobashi et al. 2000, figures 5 and 6): one spot in haze
 // with a sphere in its beam, seen from the side, so the shadow shaft is in view.
 Venue studyVenue();

@@ -1,6 +1,9 @@
 // A show's cue as the bench frame (see bench_show.h).
 #include "app/bench_show.h"
 
+#include <cstdio>
+
+#include "app/atmosphere_field.h"
 #include "app/frame_builder.h"
 #include "shows/playback.h"
 #include "shows/show.h"
@@ -30,7 +33,12 @@ Status loadBenchShow(const std::string& file, const std::string& cue, const std:
     if (!v) return v.error();
     venue = std::move(*v);
   }
-  auto f = buildFrame(*show, *profiles, state, camera, FrameOptions{.mergeCells = mergeCells});
+  // The density field as a still of the cue shows it (at its GO).
+  AtmosphereField atmosphere;
+  std::vector<std::string> warnings;
+  auto density = atmosphere.at(*show, venue.boundsMin, venue.boundsMax, 0.0, warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
+  auto f = buildFrame(*show, *profiles, state, camera, FrameOptions{.mergeCells = mergeCells, .density = std::move(density)});
   if (!f) return f.error();
   frame = std::move(*f);
   fixtures = static_cast<int>(show->fixtures.size());

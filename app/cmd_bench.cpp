@@ -16,6 +16,7 @@
 
 #include "app/bench_scene.h"
 #include "app/bench_show.h"
+#include "atmosphere/density_sim.h"
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/frame_builder.h"
@@ -134,19 +135,22 @@ int runStudy(int width, int height) {
 constexpr const char* kBenchUsage =
     "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells separate|merged]]\n"
     "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
-    "                  [--min-samples M] [--compare-reference] [--json]\n"
+    "                  [--min-samples M] [--density N] [--compare-reference] [--json]\n"
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
     "first unless --cue, from the show's first camera unless --camera) per frame and per pass;\n"
     "--cells merged draws a fixture's alike cells as one beam (docs/cells.md);\n"
     "--compare-reference also renders the CPU reference and gives the mean relative error; --study runs\n"
-    "the virtual-plane accuracy study.\n";
+    "the virtual-plane accuracy study. --density N also renders the frame through an N^3 density field\n"
+    "with a hazer (the bench scene's: docs/rendering.md, \"Density\"), alternating frame by frame with the\n"
+    "uniform medium, and gives the cost ratio.\n";
 
 int runBench(const Args& args) {
   int fixtures = -1, width = 1280, height = 720, frames = 5;
   std::string quality = "default", showPath, cue, camera, cells = "separate";
   bool json = false, compare = false, study = false;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
+  int densityCells = 0;
   CommandLine cli("haze bench", kBenchUsage);
   cli.integer("--fixtures", fixtures, 0, 4096, "0..4096")
       .text("--show", showPath, "a show file")
@@ -162,6 +166,7 @@ int runBench(const Args& args) {
       .integer("--planes", planes, 1, 4096, "1..4096")
       .integer("--scatter-divisor", divisor, 1, 8, "1..8")
       .integer("--min-samples", minSamples, 0, 256, "0..256")
+      .integer("--density", densityCells, 2, kMaxDensityCellsPerSide, "2..256 cells per side")
       .choice("--cells", cells, {"separate", "merged"});
   if (auto done = cli.parse(args)) return *done;
   auto q = parseQuality(quality);
@@ -190,6 +195,21 @@ int runBench(const Args& args) {
   if (minSamples >= 0) settings.minSamplesPerChord = minSamples;
   auto renderer = Renderer::create(venue, settings);
   if (!renderer) return fail(renderer.error().str());
+  // The same frame through a density field, on a renderer of its own, alternating with the
+  // uniform one so that both see the same load.
+  std::unique_ptr<Renderer> dense;
+  FrameState denseFrame;
+  if (densityCells > 0) {
+    DensitySpec spec = benchDensity(densityCells);
+    DensitySim sim(spec, densityGrid(spec, venue.boundsMin, venue.boundsMax));
+    denseFrame = frame;
+    denseFrame.medium.density = std::make_shared<DensityField>(sim.fieldAt(spec.warmupS));
+    auto r = Renderer::create(venue, settings);
+    if (!r) return fail(r.error().str());
+    dense = std::move(*r);
+  }
+  std::vector<double> denseTotal, denseCpu, denseBeams, denseSurfaces;
+  double denseColdMs = 0.0;
 
   std::vector<double> total, cpu, shadow, surfaces, beams, post, meter;
   double coldMs = 0.0;
@@ -214,6 +234,24 @@ int runBench(const Args& args) {
     }
     total.push_back(ms);
     cpu.push_back(processCpuMs() - cpu0);
+    if (dense) {
+      for (int pass = f == 1 ? 0 : 1; pass < 2; ++pass) {  // a cold frame first, as above
+        const auto d0 = std::chrono::steady_clock::now();
+        const double dcpu0 = processCpuMs();
+        dense->render(denseFrame);
+        const Metering m = dense->meter();
+        (void)dense->readDisplay({.exposureEv = m.ev});
+        const double dms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - d0).count();
+        if (pass == 0) {
+          denseColdMs = dms;
+          continue;
+        }
+        denseTotal.push_back(dms);
+        denseCpu.push_back(processCpuMs() - dcpu0);
+        denseBeams.push_back(dense->lastTimes().beamsMs);
+        denseSurfaces.push_back(dense->lastTimes().surfacesMs);
+      }
+    }
     shadow.push_back(t.shadowMapsMs);
     surfaces.push_back(t.surfacesMs);
     beams.push_back(t.beamsMs);
@@ -253,6 +291,16 @@ int runBench(const Args& args) {
   out["light_map_layers"] = lightLayers;
   out["peak_memory_mb"] = peakMemoryMb();
   out["warnings"] = warnings;
+  if (dense) {
+    out["density"] = {{"grid", densityCells},
+                      {"median_frame_ms", median(denseTotal)},
+                      {"median_frame_cpu_ms", median(denseCpu)},
+                      {"cold_frame_ms", denseColdMs},
+                      {"pass_ms", {{"surfaces", median(denseSurfaces)}, {"planes", median(denseBeams)}}},
+                      {"ratio_frame", median(total) > 0 ? median(denseTotal) / median(total) : 0.0},
+                      {"ratio_cpu", median(cpu) > 0 ? median(denseCpu) / median(cpu) : 0.0},
+                      {"ratio_planes", median(beams) > 0 ? median(denseBeams) / median(beams) : 0.0}};
+  }
   if (compare) {
     const ImageRGB gpu = (*renderer)->readRadiance();
     const auto t0 = std::chrono::steady_clock::now();
@@ -277,6 +325,11 @@ int runBench(const Args& args) {
                 static_cast<unsigned long long>(scattering), median(cpu));
     std::printf("  shadow maps %d px, %d light maps, %.1f beams per lit surface tile; peak memory %.0f MB\n", shadowSize,
                 lightLayers, beamsPerTile, peakMemoryMb());
+    if (dense)
+      std::printf("  through a %d^3 density field with a hazer: %.1f ms per frame (%.2fx), %.0f ms CPU (%.2fx), planes "
+                  "%.1f ms (%.2fx), surfaces %.1f ms; cold %.1f ms\n", densityCells, median(denseTotal),
+                  out["density"]["ratio_frame"].get<double>(), median(denseCpu), out["density"]["ratio_cpu"].get<double>(),
+                  median(denseBeams), out["density"]["ratio_planes"].get<double>(), median(denseSurfaces), denseColdMs);
     if (compare)
       std::printf("  reference %.0f ms, mean relative error %.4f, %.0fx faster\n", out["reference_ms"].get<double>(),
                   out["mean_relative_error"].get<double>(), out["speedup_vs_reference"].get<double>());

@@ -152,7 +152,7 @@ int runRender(const Args& args) {
     const std::string comment = "haze render of " + showPath + ", cue list " + cueList->name + ", cue " + c.number +
                                 (c.label.empty() ? "" : " \"" + c.label + "\"") +
                                 (at >= 0 ? ", " + secondsText(at) + " s after GO" : ", its full state");
-    const Status s = (*session)->renderToFile(*show, *profiles, state, file, comment);
+    const Status s = (*session)->renderToFile(*show, *profiles, state, file, comment, at < 0 ? 0.0 : at);
     if (!s) {
       fail(s.error().str());
       return false;

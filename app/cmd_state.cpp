@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/atmosphere_field.h"
+#include "renderer/scene/venue.h"
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/state_json.h"
@@ -88,7 +90,32 @@ int runState(const Args& args) {
 
   // The strobe runs on the playback clock, which starts at GO: --at is also the gate's time.
   const bool atGiven = atS < 1e9;
-  const nlohmann::ordered_json out = stageStateJson(*show, *profiles, state, atGiven ? std::optional<double>(atS) : std::nullopt);
+  nlohmann::ordered_json out = stageStateJson(*show, *profiles, state, atGiven ? std::optional<double>(atS) : std::nullopt);
+  // The density field at that time (docs/shows.md, "Density"), summed up.
+  if (const auto& spec = show->atmosphere.density) {
+    glm::vec3 lo{0.0f}, hi{0.0f};
+    if (!spec->boundsMinM && !show->venueGltf.empty()) {
+      auto venue = loadVenue(show->resolve(show->venueGltf));
+      if (!venue) {
+        std::cerr << venue.error().str() << "\n";
+        return 1;
+      }
+      lo = venue->boundsMin;
+      hi = venue->boundsMax;
+    }
+    AtmosphereField atmosphere;
+    std::vector<std::string> warnings;
+    const double clockS = atGiven ? atS : 0.0;
+    const auto field = atmosphere.at(*show, lo, hi, clockS, warnings);
+    for (const std::string& w : warnings) std::cerr << "haze: warning: " << w << "\n";
+    double sum = 0.0;
+    for (float v : field->values) sum += v;
+    out["atmosphere"] = {{"density_time_s", densityTimeS(*spec, clockS)},
+                         {"grid", {field->nx, field->ny, field->nz}},
+                         {"bounds", {{field->minM.x, field->minM.y, field->minM.z}, {field->maxM.x, field->maxM.y, field->maxM.z}}},
+                         {"mean_density", sum / static_cast<double>(field->values.size())},
+                         {"max_density", field->maxValue()}};
+  }
   if (json) {
     std::cout << out.dump(2) << "\n";
   } else {

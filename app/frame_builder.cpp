@@ -72,6 +72,7 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
     frame.camera = cameraState(show.cameras.front());
   }
   frame.medium = mediumState(show.atmosphere);
+  frame.medium.density = options.density;
 
   for (const FixtureDef& f : show.fixtures) {
     auto p = profiles.find(f.profile);

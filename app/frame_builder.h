@@ -2,6 +2,7 @@
 // lit fixture). This is the only place where shows meet the renderer.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -26,6 +27,8 @@ struct FrameOptions {
   std::optional<FrameTime> time;  // none: a still
   // The fixtures' housings (docs/fixtures.md, "Bodies"), dark fixtures' too.
   bool bodies = true;
+  // The medium's density field at the frame's time (app/atmosphere_field.h); none: uniform.
+  std::shared_ptr<const DensityField> density;
 };
 
 // cameraName "" = the show's first camera (or a default view of the stage when it has none).

@@ -67,8 +67,13 @@ Result<std::unique_ptr<RenderSession>> RenderSession::open(const Show& show, con
   return session;
 }
 
-Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const StageState& state, bool reportRows) {
-  auto frame = buildFrame(show, profiles, state, options_.camera, FrameOptions{.mergeCells = options_.mergeCells, .bodies = options_.bodies});
+Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const StageState& state, bool reportRows,
+                           double clockS) {
+  std::vector<std::string> warnings;
+  auto density = atmosphere_.at(show, venue_.boundsMin, venue_.boundsMax, clockS, warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
+  auto frame = buildFrame(show, profiles, state, options_.camera,
+                          FrameOptions{.mergeCells = options_.mergeCells, .bodies = options_.bodies, .density = std::move(density)});
   if (!frame) return frame.error();
   referenceImage_.reset();
   if (options_.quality == Quality::Reference) {
@@ -97,11 +102,11 @@ std::vector<unsigned char> RenderSession::display(const Show& show) {
 }
 
 Status RenderSession::renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
-                                   const std::filesystem::path& out, const std::string& comment) {
+                                   const std::filesystem::path& out, const std::string& comment, double clockS) {
   const std::string ext = out.extension().string();
   if (ext != ".pfm" && ext != ".png" && ext != ".exr")
     return Error{out.string(), "", "unknown image type (expected .png, .pfm or .exr)"};
-  if (Status s = draw(show, profiles, state, true); !s) return s;
+  if (Status s = draw(show, profiles, state, true, clockS); !s) return s;
   if (ext == ".png") return writePng8(display(show), options_.width, options_.height, out);
   if (ext == ".pfm") return writePfm(radiance(), out);
   return writeExrWarning(radiance(), out, {.pixel = options_.exrPixel, .comment = comment});

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "app/atmosphere_field.h"
 #include "app/render_job.h"
 #include "fixtures/core/result.h"
 #include "renderer/context.h"
@@ -29,14 +30,16 @@ class RenderSession {
   // under Quality::Reference), then read the radiometric image or the display encoding, metered
   // and exposed exactly as a PNG of renderToFile.
   // reportRows: the CPU reference's rows as a progress line (a still; a video reports frames).
-  Status draw(const Show& show, const ProfileSet& profiles, const StageState& state, bool reportRows = false);
+  // clockS: the playback time, for the density field (docs/shows.md, "Density").
+  Status draw(const Show& show, const ProfileSet& profiles, const StageState& state, bool reportRows = false,
+              double clockS = 0.0);
   ImageRGB radiance() const;
   std::vector<unsigned char> display(const Show& show);
   const RenderJobOptions& options() const { return options_; }
 
   // `comment` goes into an EXR's header (what was rendered: show, cue list, cue, time).
   Status renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
-                      const std::filesystem::path& out, const std::string& comment = {});
+                      const std::filesystem::path& out, const std::string& comment = {}, double clockS = 0.0);
   // The absolute EV of the last PNG (the metered one plus the offset, under auto).
   float lastExposureEv() const { return lastExposureEv_; }
   Renderer& renderer() { return *renderer_; }
@@ -49,6 +52,7 @@ class RenderSession {
   std::unique_ptr<Renderer> renderer_;
   float lastExposureEv_ = 0.0f;
   std::optional<ImageRGB> referenceImage_;  // the last draw's, under Quality::Reference
+  AtmosphereField atmosphere_;
 };
 
 }  // namespace haze

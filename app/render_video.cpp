@@ -153,8 +153,9 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
       if (f == 0) heads.reset(state, t);
       state = heads.advance(state, t, true);
     }
-    if (f == 0 || state != lastState) {
-      if (Status s = session.draw(show, profiles, state); !s) return s.error();
+    // A drifting density field changes every frame, whatever the stage does.
+    if (f == 0 || state != lastState || densityMoves(show.atmosphere)) {
+      if (Status s = session.draw(show, profiles, state, false, t); !s) return s.error();
       if (exr)
         radiance = session.radiance();
       else

@@ -69,7 +69,8 @@ void BeamPass::resize(int width, int height) {
   accumulated_ = 0;  // what was accumulated was for the old size
 }
 
-uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, GLuint sceneDepth,
+uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, const DensityResources& density,
+                          GLuint sceneDepth,
                           GLuint radianceFbo, bool accumulate) {
   const MediumState& med = frame.medium;
   beamsDrawn_ = 0;
@@ -112,6 +113,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, G
   glProgramUniform1i(prog, HAZE_LOC_PHASE, static_cast<int>(med.phase));  // Phase's values are HAZE_PHASE_*
   glProgramUniform1f(prog, HAZE_LOC_PHASE_G, med.g);
   beams.bind();
+  density.bind(prog);
 
   // Each cone only as far as it can light anything (its shadow map's farthest surface).
   std::vector<BeamFootprint> footprints(frame.beams.size());

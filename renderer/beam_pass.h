@@ -12,6 +12,7 @@
 #include "fixtures/core/result.h"
 #include "renderer/beam_footprint.h"
 #include "renderer/beam_resources.h"
+#include "renderer/density_resources.h"
 #include "renderer/gl/objects.h"
 #include "renderer/scene/frame_state.h"
 
@@ -44,7 +45,8 @@ class BeamPass {
   // accumulate, the scattering of earlier calls is kept and this call's frames (jittered on
   // from frame number firstFrame) are added: progressive refinement while nothing moves.
   // Returns the plane fragments rasterised (footprint pixels times planes), for the bench.
-  uint64_t render(const FrameState& frame, const BeamResources& beams, GLuint sceneDepth, GLuint radianceFbo,
+  uint64_t render(const FrameState& frame, const BeamResources& beams, const DensityResources& density,
+                  GLuint sceneDepth, GLuint radianceFbo,
                   bool accumulate = false);
   const BeamPassSettings& settings() const { return settings_; }
   int accumulatedFrames() const { return accumulated_; }

@@ -234,7 +234,8 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
     g.shadowViewProj = viewProj;
     // A radius of 0 draws no disc (a degenerate quad): tests use it to see the in-scattering alone.
     const float rl = std::max(b.optics.lensRadiusM, 0.0f);
-    g.lens = glm::vec4(rl, rl > 0.0f ? 1.0f / (3.14159265f * rl * rl) : 0.0f, coreCos2_[static_cast<size_t>(layer)], 0.0f);
+    g.lens = glm::vec4(rl, rl > 0.0f ? 1.0f / (3.14159265f * rl * rl) : 0.0f, coreCos2_[static_cast<size_t>(layer)],
+                       1.0f / std::max(reachesM_[static_cast<size_t>(i)], 1e-3f));
   }
   stats.lightMapLayers = static_cast<int>(layerOf.size());
   if (!stats.notDrawn.empty()) {

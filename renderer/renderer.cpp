@@ -11,6 +11,7 @@
 
 #include "renderer/beam_pass.h"
 #include "renderer/beam_resources.h"
+#include "renderer/density_resources.h"
 #include "renderer/gl/program.h"
 #include "renderer/gpu_bodies.h"
 #include "renderer/gpu_venue.h"
@@ -53,6 +54,7 @@ struct Renderer::Impl {
   GpuVenue venue;
   GpuBodies bodies;
   BeamResources beams;
+  DensityResources density;
   gl::Program shadowProgram, surfaceProgram, lensProgram, postProgram, bloomPostProgram;
   gl::Texture radiance, depth, display;
   gl::Sampler mipSampler{"radiance_mips"};  // for bloom: trilinear over the radiance's mip levels
@@ -180,10 +182,13 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   const int w = settings_.width, h = settings_.height;
   const MediumState& med = frame.medium;
   const float sigmaT = med.extinction();
+  m.density.update(frame, static_cast<float>(w) / static_cast<float>(h), m.beams);
   glBindFramebuffer(GL_FRAMEBUFFER, m.sceneFbo.id());
   glViewport(0, 0, w, h);
-  // Where no surface is hit the ray ends at the camera's far distance (docs/physics.md).
-  const glm::vec4 background(med.background * std::exp(-sigmaT * frame.camera.farM), 1.0f);
+  // Where no surface is hit the ray ends at the camera's far distance (docs/physics.md); through
+  // a density field, attenuated by its path along the view axis (docs/rendering.md, "Density").
+  const float backgroundPath = m.density.on() ? m.density.backgroundPath() : frame.camera.farM;
+  const glm::vec4 background(med.background * std::exp(-sigmaT * backgroundPath), 1.0f);
   glClearNamedFramebufferfv(m.sceneFbo.id(), GL_COLOR, 0, glm::value_ptr(background));
   const float one = 1.0f;
   glClearNamedFramebufferfv(m.sceneFbo.id(), GL_DEPTH, 0, &one);
@@ -224,6 +229,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glProgramUniform1i(prog, HAZE_LOC_SURFACE_BEAM_COUNT, m.beams.count());
   glProgramUniform1i(prog, HAZE_LOC_SURFACE_TILE_COLUMNS, tiled ? m.tiles.columns() : 0);
   glProgramUniform1i(prog, HAZE_LOC_SURFACE_MASK_WORDS, m.tiles.maskWords());
+  m.density.bind(prog);
   m.venue.bind();
   for (const GpuVenue::Draw& d : m.venue.draws()) {
     const GpuVenue::GpuMaterial& mat = m.venue.materials()[static_cast<size_t>(d.material)];
@@ -260,6 +266,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     glProgramUniformMatrix4fv(lensProg, HAZE_LOC_LENS_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
     glProgramUniform1f(lensProg, HAZE_LOC_LENS_SIGMA_T, sigmaT);
     glProgramUniform3fv(lensProg, HAZE_LOC_CAMERA_EYE, 1, glm::value_ptr(frame.camera.position));
+    m.density.bind(lensProg);
     glBindVertexArray(m.emptyVao.id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, m.beams.count());
   }
@@ -267,7 +274,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
 
   begin(2);
   times_.planeFragments =
-      m.beamPass.render(frame, m.beams, m.depth.id(), m.radianceOnlyFbo.id(), accumulate);
+      m.beamPass.render(frame, m.beams, m.density, m.depth.id(), m.radianceOnlyFbo.id(), accumulate);
   end();
   times_.accumulatedFrames = m.beamPass.accumulatedFrames();
   times_.beamsDrawn = m.beamPass.beamsDrawn();

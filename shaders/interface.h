@@ -29,6 +29,9 @@
 #define HAZE_UNIT_SCATTER 6         // composite.frag.glsl: accumulated in-scattering
 #define HAZE_UNIT_SCATTER_DEPTH 7   // composite.frag.glsl: view depth per scattering texel
 #define HAZE_UNIT_RADIANCE_MIPS 8   // post.frag.glsl: the radiance again, trilinear (bloom)
+#define HAZE_UNIT_DENSITY 9         // density.glsl: D(x) on its grid (3D, trilinear, clamped to edge)
+#define HAZE_UNIT_EYE_PATH 10       // density.glsl: the integral of D from the eye, over screen x view depth
+#define HAZE_UNIT_LENS_PATH 11      // density.glsl: the integral of D from each lens, over light-map (u, v) x r
 // No image units are used.
 
 // ---- Shader storage buffer bindings -------------------------------------------------------
@@ -102,6 +105,17 @@
 #define HAZE_LOC_TILES_MASK_WORDS 2
 #define HAZE_LOC_TILES_GRID 3   // columns, rows
 
+// density.glsl (with surface, lens and virtual-plane programs; docs/rendering.md, "Density")
+#define HAZE_LOC_DENSITY_ON 60          // int: 0 = the uniform medium (D = 1, no lookups)
+#define HAZE_LOC_DENSITY_MIN 61         // vec3: the grid's lower corner
+#define HAZE_LOC_DENSITY_INV_SIZE 62    // vec3: 1 / the grid's extent
+#define HAZE_LOC_EYE_PATH_EYE 63        // vec3
+#define HAZE_LOC_EYE_PATH_FORWARD 64    // vec3, unit
+#define HAZE_LOC_EYE_PATH_RIGHT_TAN 65  // vec3: right * tan(fov_x / 2)
+#define HAZE_LOC_EYE_PATH_UP_TAN 66     // vec3: up * tan(fov_y / 2)
+#define HAZE_LOC_EYE_PATH_DEPTH 67      // float: the view depth of the map's last slice
+#define HAZE_LOC_LENS_PATH_GRID 68      // ivec4: tiles across, tiles down, texels per tile side, r slices
+
 // ---- Enums --------------------------------------------------------------------------------
 // haze::Phase (renderer/scene/frame_state.h) asserts its values against these.
 #define HAZE_PHASE_HAZY 0
@@ -132,7 +146,7 @@ struct Beam {
   vec4 zb;        // xyz beam axis, w = shadow-map layer
   vec4 color;     // rgb = dimmer * colour filter, w = tan(cutoff)
   mat4 shadowViewProj;
-  vec4 lens;      // x = r_lens, y = 1 / (pi r_lens^2), z = cos^2 of the core half-angle (0: no core), w unused
+  vec4 lens;      // x = r_lens, y = 1 / (pi r_lens^2), z = cos^2 of the core half-angle (0: no core), w = 1 / reach (m)
 };
 
 // The std430 offsets of struct Beam's fields: the C++ compiler lays out glm types by its own

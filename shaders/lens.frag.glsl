@@ -4,6 +4,7 @@
 // the beam pass stops the eye ray's in-scattering there (docs/physics.md, "The lens").
 #include "beams.glsl"
 #include "camera.glsl"
+#include "density.glsl"
 
 layout(location = HAZE_LOC_LENS_SIGMA_T) uniform float uSigmaT;
 
@@ -23,7 +24,8 @@ void main() {
     vec3 wl;
     float r;
     vec3 I = beamIntensity(b, uEye, wl, r);
-    L = I * b.lens.y / cosE * exp(-uSigmaT * length(vPosition - uEye));
+    float path = uDensityOn != 0 ? eyePathTo(vPosition) : length(vPosition - uEye);
+    L = I * b.lens.y / cosE * exp(-uSigmaT * path);
   }
   outRadiance = vec4(L, 1.0);
 }

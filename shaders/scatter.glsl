@@ -2,6 +2,7 @@
 // v (with dot(v, forward) = 1, len = |v|): sigma_s p(a) V(x) I_eff exp(-sigma_t (r + t)) / r^2.
 #include "beams.glsl"
 #include "camera.glsl"
+#include "density.glsl"
 #include "phase.glsl"
 #include "interface.h"
 
@@ -24,7 +25,13 @@ vec3 scatterSample(Beam b, vec3 v, float len, float z) {
   if (I == vec3(0.0)) return vec3(0.0);
   float vis = beamVisibilityVolume(b, x);
   float t = z * len;
-  return uSigmaS * phaseFunction(dot(wl, -v / len)) * vis * I * exp(-uSigmaT * (r + t)) / (r * r);
+  if (uDensityOn == 0)
+    return uSigmaS * phaseFunction(dot(wl, -v / len)) * vis * I * exp(-uSigmaT * (r + t)) / (r * r);
+  // sigma_s(x) = D(x) sigma_s, both transmittances over the paths through D (docs/physics.md, 9).
+  float cz = dot(wl, b.zb.xyz);
+  vec2 uv = vec2(dot(wl, b.xb.xyz), dot(wl, b.yb.xyz)) / cz * b.xb.w * 0.5 + 0.5;
+  float path = lensPathTo(uBeam, uv, r, b.lens.w) + eyePathTo(x);
+  return uSigmaS * densityAt(x) * phaseFunction(dot(wl, -v / len)) * vis * I * exp(-uSigmaT * path) / (r * r);
 }
 
 // The same integrand along one eye ray, with what is linear in the view depth z set up once per
@@ -59,7 +66,8 @@ vec3 scatterAt(Beam b, BeamRay s, float z) {
   float r = sqrt(r2);
   vec3 p = s.p0 + z * s.p1;
   if (p.z <= b.lensPos.w * r) return vec3(0.0);  // outside the cone
-  float cd = texture(uLightMaps, vec3(p.xy / p.z * b.xb.w * 0.5 + 0.5, b.yb.w)).r;
+  vec2 uv = p.xy / p.z * b.xb.w * 0.5 + 0.5;
+  float cd = texture(uLightMaps, vec3(uv, b.yb.w)).r;
   vec4 c = s.c0 + z * s.c1;
   float vis = 1.0;
   if (c.w > 0.0) {
@@ -68,5 +76,10 @@ vec3 scatterAt(Beam b, BeamRay s, float z) {
       vis = texture(uShadowMaps, vec4(sc.xy, b.zb.w, sc.z));
   }
   float cosA = (s.q0 + z * s.q1) / r;
-  return uSigmaS * phaseFunction(cosA) * vis * cd * b.color.rgb * exp(-uSigmaT * (r + z * s.len)) / r2;
+  if (uDensityOn == 0)
+    return uSigmaS * phaseFunction(cosA) * vis * cd * b.color.rgb * exp(-uSigmaT * (r + z * s.len)) / r2;
+  // sigma_s(x) = D(x) sigma_s, both transmittances over the paths through D (docs/physics.md, 9).
+  vec3 x = b.lensPos.xyz + d;
+  float path = lensPathTo(uBeam, uv, r, b.lens.w) + eyePathTo(x);
+  return uSigmaS * densityAt(x) * phaseFunction(cosA) * vis * cd * b.color.rgb * exp(-uSigmaT * path) / r2;
 }

@@ -1,6 +1,7 @@
 // Surfaces lit by every beam, per docs/physics.md: two-sided Lambert with I_eff, V, cosine,
 // exp(-sigma_t r) / r^2, plus ambient and emission, then attenuated by exp(-sigma_t T) to the eye.
 #include "beams.glsl"
+#include "density.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -23,7 +24,8 @@ layout(binding = HAZE_UNIT_EMISSIVE_TEXTURE) uniform sampler2D uEmissiveTexture;
 layout(location = HAZE_FRAG_OUT) out vec4 outRadiance;
 
 // Irradiance from one beam at this surface point (facing n): I_eff V cos exp(-sigma_t r) / r^2.
-vec3 beamIrradiance(Beam b, vec3 n) {
+vec3 beamIrradiance(int i, vec3 n) {
+  Beam b = beams[i];
   // Most beams miss most pixels: test the cone before anything else.
   vec3 d = vPosition - b.lensPos.xyz;
   if (dot(d, b.zb.xyz) <= b.lensPos.w * length(d)) return vec3(0.0);
@@ -42,7 +44,12 @@ vec3 beamIrradiance(Beam b, vec3 n) {
   float texelPerM = 2.0 / (length(vec3(m[0][0], m[1][0], m[2][0])) * float(textureSize(uShadowMaps, 0).x));
   float slant = sqrt(max(1.0 - cosine * cosine, 0.0));
   float v = beamVisibility(b, vPosition + n * (max(0.0015, 1.5 * texelPerM * slant) * r));
-  return I * (v * cosine * exp(-uSigmaT * r) / (r * r));
+  float path = r;
+  if (uDensityOn != 0) {  // the light's path through D (docs/physics.md, section 9)
+    vec2 uv = vec2(dot(wl, b.xb.xyz), dot(wl, b.yb.xyz)) / dot(wl, b.zb.xyz) * b.xb.w * 0.5 + 0.5;
+    path = lensPathTo(i, uv, r, b.lens.w);
+  }
+  return I * (v * cosine * exp(-uSigmaT * path) / (r * r));
 }
 
 void main() {
@@ -57,15 +64,15 @@ void main() {
 
   vec3 irradiance = vec3(0.0);
   if (uTileColumns == 0) {
-    for (int i = 0; i < uBeamCount; ++i) irradiance += beamIrradiance(beams[i], n);
+    for (int i = 0; i < uBeamCount; ++i) irradiance += beamIrradiance(i, n);
   } else {
     ivec2 tile = ivec2(gl_FragCoord.xy) / HAZE_TILE_PX;
     int base = (tile.y * uTileColumns + tile.x) * uMaskWords;
     for (int w = 0; w < uMaskWords; ++w) {
       for (uint bits = tileMasks[base + w]; bits != 0u; bits &= bits - 1u)
-        irradiance += beamIrradiance(beams[w * 32 + findLSB(bits)], n);
+        irradiance += beamIrradiance(w * 32 + findLSB(bits), n);
     }
   }
   vec3 L = albedo / PI * irradiance + albedo * uAmbient + emission;
-  outRadiance = vec4(L * exp(-uSigmaT * T), 1.0);
+  outRadiance = vec4(L * exp(-uSigmaT * (uDensityOn != 0 ? eyePathTo(vPosition) : T)), 1.0);
 }

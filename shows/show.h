@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
+#include "atmosphere/density_spec.h"
 #include "fixtures/attributes.h"
 #include "fixtures/profile.h"
 #include "fixtures/core/result.h"
@@ -44,6 +45,8 @@ struct AtmosphereDef {
   float g = 0.0f;               // hg asymmetry
   glm::vec3 ambient{0.0f};      // number or [r, g, b] in the file
   glm::vec3 background{0.0f};   // number or [r, g, b] in the file; 0 unless the show sets one
+  // The density field D(x) (docs/shows.md, "Density"); none: D = 1 everywhere.
+  std::optional<DensitySpec> density;
 };
 
 struct Patch {

@@ -2,6 +2,7 @@
 // unknown key, a value outside a range that needs no profile, negative times, a bad cue number)
 // is collected with its JSON pointer, so `haze validate` can list them all at once. Checks that
 // need profiles or compare parts of the show with each other live in show_validate.cpp.
+#include <algorithm>
 #include <charconv>
 #include <climits>
 #include <cmath>
@@ -225,12 +226,112 @@ void readVenue(Reader& r, const json& root, Show& show) {
   r.stringMember(*v, "/venue", "gltf", true, "the path of a glTF file", show.venueGltf, true);
 }
 
+// atmosphere.density (docs/shows.md, "Density"). A grid too large to simulate is refused here,
+// with what it would need; hazers outside the venue are clamped when the field is made (the
+// venue's bounds are not known here).
+void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) {
+  if (!r.isObject(j, p, "the density field")) return;
+  DensitySpec d;
+  r.onlyKeys(j, p, {"base", "grid", "bounds", "air_flow", "mixing", "dissipation", "warmup", "still", "fog", "boxes",
+                    "hazers"});
+  r.numberMember(j, p, "base", false, 0.0, 1e6, "a density (1 = the atmosphere's own)", d.base);
+  if (const json* g = r.member(j, p, "grid", false)) {
+    const std::string gp = p + "/grid";
+    int n[3] = {d.grid[0], d.grid[1], d.grid[2]};
+    bool ok = true;
+    if (g->is_array() && g->size() == 3) {
+      for (size_t k = 0; k < 3; ++k)
+        ok = r.integer((*g)[k], gp + "/" + std::to_string(k), 1, 1 << 20, "cells along an axis", n[k]) && ok;
+    } else if (g->is_number()) {
+      ok = r.integer(*g, gp, 1, 1 << 20, "cells along each axis", n[0]);
+      n[1] = n[2] = n[0];
+    } else {
+      r.problem(gp, "expected the grid's cells as a number or [x, y, z]");
+      ok = false;
+    }
+    if (ok) {
+      const long long cells = static_cast<long long>(n[0]) * n[1] * n[2];
+      const int side = std::max({n[0], n[1], n[2]});
+      if (side > kMaxDensityCellsPerSide || cells > kMaxDensityCells) {
+        r.problem(gp, "a grid of " + std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" + std::to_string(n[2]) +
+                          " cells needs about " + std::to_string(cells * 28 / (1 << 20)) +
+                          " MB to simulate; at most " + std::to_string(kMaxDensityCellsPerSide) + " per side and " +
+                          std::to_string(kMaxDensityCells) + " cells");
+      } else {
+        for (int k = 0; k < 3; ++k) d.grid[k] = n[k];
+      }
+    }
+  }
+  if (const json* b = r.member(j, p, "bounds", false)) {
+    glm::vec3 lo{0.0f}, hi{0.0f};
+    if (!b->is_array() || b->size() != 2) {
+      r.problem(p + "/bounds", "expected the grid's box as [[x, y, z], [x, y, z]] (its two corners)");
+    } else if (r.vec3((*b)[0], p + "/bounds/0", -kMaxMagnitude, kMaxMagnitude, "a corner in metres", lo) &&
+               r.vec3((*b)[1], p + "/bounds/1", -kMaxMagnitude, kMaxMagnitude, "a corner in metres", hi)) {
+      if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
+        r.problem(p + "/bounds", "the second corner must be above the first on every axis");
+      d.boundsMinM = lo;
+      d.boundsMaxM = hi;
+    }
+  }
+  r.vec3Member(j, p, "air_flow", false, -100.0, 100.0, "the room's air speed in m/s", d.airFlowMps);
+  r.numberMember(j, p, "mixing", false, 0.0, 100.0, "a diffusion in m^2/s", d.mixingM2ps);
+  r.numberMember(j, p, "dissipation", false, 0.0, 100.0, "a decay rate in 1/s", d.dissipationPerS);
+  float warmup = static_cast<float>(d.warmupS);
+  if (r.numberMember(j, p, "warmup", false, 0.0, 86400.0, "seconds the hazers ran before GO", warmup)) d.warmupS = warmup;
+  if (const json* s = r.member(j, p, "still", false)) {
+    if (s->is_boolean())
+      d.still = s->get<bool>();
+    else
+      r.problem(p + "/still", std::string("expected true or false, got ") + typeName(*s));
+  }
+  if (const json* f = r.member(j, p, "fog", false); f && r.isObject(*f, p + "/fog", "the ground fog")) {
+    FogLayerSpec fog;
+    r.onlyKeys(*f, p + "/fog", {"density", "height", "falloff"});
+    r.numberMember(*f, p + "/fog", "density", true, 0.0, 1e6, "the fog's density", fog.density);
+    r.numberMember(*f, p + "/fog", "height", false, -1e4, 1e4, "the layer's top in metres", fog.heightM);
+    r.numberMember(*f, p + "/fog", "falloff", false, 0.001, 1e4, "a length in metres", fog.falloffM);
+    d.fog = fog;
+  }
+  if (const json* bs = r.member(j, p, "boxes", false); bs && r.isArray(*bs, p + "/boxes", "the density boxes")) {
+    for (size_t i = 0; i < bs->size(); ++i) {
+      const std::string bp = p + "/boxes/" + std::to_string(i);
+      const json& b = (*bs)[i];
+      if (!r.isObject(b, bp, "a density box")) continue;
+      DensityBoxSpec box;
+      r.onlyKeys(b, bp, {"min", "max", "density"});
+      r.vec3Member(b, bp, "min", true, -kMaxMagnitude, kMaxMagnitude, "a corner in metres", box.minM);
+      r.vec3Member(b, bp, "max", true, -kMaxMagnitude, kMaxMagnitude, "a corner in metres", box.maxM);
+      r.numberMember(b, bp, "density", true, 0.0, 1e6, "the box's density", box.density);
+      d.boxes.push_back(box);
+    }
+  }
+  if (const json* hs = r.member(j, p, "hazers", false); hs && r.isArray(*hs, p + "/hazers", "the hazers")) {
+    for (size_t i = 0; i < hs->size(); ++i) {
+      const std::string hp = p + "/hazers/" + std::to_string(i);
+      const json& h = (*hs)[i];
+      if (!r.isObject(h, hp, "a hazer")) continue;
+      HazerSpec hz;
+      r.onlyKeys(h, hp, {"position", "direction", "output", "spread", "speed"});
+      r.vec3Member(h, hp, "position", true, -kMaxMagnitude, kMaxMagnitude, "a position in metres", hz.positionM);
+      if (r.vec3Member(h, hp, "direction", false, -kMaxMagnitude, kMaxMagnitude, "a direction", hz.direction) &&
+          hz.direction == glm::vec3(0.0f))
+        r.problem(hp + "/direction", "expected a direction, got [0, 0, 0]");
+      r.numberMember(h, hp, "output", false, 0.0, 1e4, "an output in m^3/s of haze at density 1", hz.output);
+      r.numberMember(h, hp, "spread", false, 1.0, 160.0, "the fan's cone angle in degrees", hz.spreadDeg);
+      r.numberMember(h, hp, "speed", false, 0.0, 50.0, "the fan's air speed in m/s", hz.speedMps);
+      d.hazers.push_back(hz);
+    }
+  }
+  at.density = d;
+}
+
 void readAtmosphere(Reader& r, const json& root, Show& show) {
   const json* a = r.member(root, "", "atmosphere", false);
   if (!a || !r.isObject(*a, "/atmosphere", "the atmosphere")) return;
   const std::string p = "/atmosphere";
   AtmosphereDef& at = show.atmosphere;
-  r.onlyKeys(*a, p, {"scattering", "absorption", "phase", "g", "ambient", "background"});
+  r.onlyKeys(*a, p, {"scattering", "absorption", "phase", "g", "ambient", "background", "density"});
   r.numberMember(*a, p, "scattering", false, 0.0, kInf, "a scattering coefficient in 1/m", at.scattering);
   r.numberMember(*a, p, "absorption", false, 0.0, kInf, "an absorption coefficient in 1/m", at.absorption);
   std::string phase;
@@ -244,6 +345,7 @@ void readAtmosphere(Reader& r, const json& root, Show& show) {
   if (const json* j = r.member(*a, p, "ambient", false)) r.greyOrRgb(*j, p + "/ambient", "the ambient light", at.ambient);
   if (const json* j = r.member(*a, p, "background", false))
     r.greyOrRgb(*j, p + "/background", "the background radiance", at.background);
+  if (const json* j = r.member(*a, p, "density", false)) readDensity(r, *j, p + "/density", at);
 }
 
 void readCameras(Reader& r, const json& root, Show& show) {

@@ -136,6 +136,37 @@ ojson timingJson(const CueTimingDef& t) {
   return o;
 }
 
+// atmosphere.density as docs/shows.md lists it; defaults are left out.
+ojson densityJson(const DensitySpec& d) {
+  const DensitySpec def;
+  ojson o = ojson::object();
+  o["base"] = tidy(d.base);
+  if (d.grid[0] != def.grid[0] || d.grid[1] != def.grid[1] || d.grid[2] != def.grid[2])
+    o["grid"] = ojson::array({d.grid[0], d.grid[1], d.grid[2]});
+  if (d.boundsMinM && d.boundsMaxM) o["bounds"] = ojson::array({vec(*d.boundsMinM), vec(*d.boundsMaxM)});
+  if (d.airFlowMps != glm::vec3(0.0f)) o["air_flow"] = vec(d.airFlowMps);
+  if (d.mixingM2ps != def.mixingM2ps) o["mixing"] = tidy(d.mixingM2ps);
+  if (d.dissipationPerS != 0.0f) o["dissipation"] = tidy(d.dissipationPerS);
+  if (d.warmupS != def.warmupS) o["warmup"] = tidy(static_cast<float>(d.warmupS));
+  if (d.still) o["still"] = true;
+  if (d.fog) o["fog"] = ojson{{"density", tidy(d.fog->density)}, {"height", tidy(d.fog->heightM)},
+                              {"falloff", tidy(d.fog->falloffM)}};
+  if (!d.boxes.empty()) {
+    ojson boxes = ojson::array();
+    for (const DensityBoxSpec& b : d.boxes)
+      boxes.push_back(ojson{{"min", vec(b.minM)}, {"max", vec(b.maxM)}, {"density", tidy(b.density)}});
+    o["boxes"] = boxes;
+  }
+  if (!d.hazers.empty()) {
+    ojson hazers = ojson::array();
+    for (const HazerSpec& h : d.hazers)
+      hazers.push_back(ojson{{"position", vec(h.positionM)}, {"direction", vec(h.direction)}, {"output", tidy(h.output)},
+                             {"spread", tidy(h.spreadDeg)}, {"speed", tidy(h.speedMps)}});
+    o["hazers"] = hazers;
+  }
+  return o;
+}
+
 ojson showJson(const Show& s) {
   ojson root = ojson::object();
   root["format"] = "haze-show";
@@ -149,6 +180,7 @@ ojson showJson(const Show& s) {
   at["g"] = tidy(a.g);
   at["ambient"] = greyOrRgb(a.ambient);
   if (a.background != glm::vec3(0.0f)) at["background"] = greyOrRgb(a.background);
+  if (a.density) at["density"] = densityJson(*a.density);
   root["atmosphere"] = at;
   ojson cams = ojson::array();
   for (const CameraDef& c : s.cameras) {

@@ -26,6 +26,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>  // GetItemID: which widget an edit came from (undo merging)
 
+#include "app/atmosphere_field.h"
 #include "shows/edit/show_document.h"
 #include "shows/movement.h"
 #include "app/render_job.h"
@@ -62,6 +63,9 @@ Layout layoutFor(float widthPx, float heightPx, float menuHeightPx);
 struct Gui {
   GLFWwindow* window = nullptr;
   std::unique_ptr<ShowDocument> doc;
+  // The show's density field as a still at GO (docs/shows.md, "Density"): the viewport
+  // accumulates still frames, so the haze is not drifted in the window.
+  AtmosphereField atmosphere;
   std::unique_ptr<LiveReceiver> live;  // DMX from a console drives the rig instead of the cues
   std::string liveBind;
   Layout layout;

@@ -290,6 +290,10 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   FrameOptions frameOptions;
   frameOptions.bodies = gui.showBodies;
   if (flash) frameOptions.time = FrameTime{gui.nowS, exposureS};
+  std::vector<std::string> densityWarnings;
+  frameOptions.density = gui.atmosphere.at(gui.doc->show(), gui.doc->venue().boundsMin, gui.doc->venue().boundsMax, 0.0,
+                                           densityWarnings);
+  for (const std::string& w : densityWarnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
   auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "", frameOptions);
   if (!frameState) return frameState.error();
   frameState->camera = gui.cameraState();

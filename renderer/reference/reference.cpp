@@ -33,6 +33,12 @@ constexpr int kEdgeBisections = 12;
 constexpr float kIntensityJump = 0.2f;
 constexpr int kIntensitySubsteps = 16;
 
+// The integral of D along a -> b: the path's length in metres of medium at the nominal density
+// (docs/physics.md, "A medium that is not uniform"); its length itself in the uniform medium.
+float densityLength(const MediumState& m, const glm::vec3& a, const glm::vec3& b) {
+  return m.density ? m.density->integral(a, b) : glm::length(b - a);
+}
+
 struct ActiveBeam {
   const BeamState* beam;
   float cutoffRad;
@@ -85,6 +91,20 @@ glm::vec3 inScatterOneBeam(const Bvh& bvh, const MediumState& medium, const Acti
   const int n = static_cast<int>(std::min(steps, 1e6));
   const double dphi = range / n;
   const float sigmaT = medium.extinction();
+  const DensityField* field = medium.density.get();
+  // With a density field the eye's optical path is carried along the chord (the samples come
+  // in increasing t), from the eye to the chord's start first.
+  double tauT = chord.t0;
+  float tauEye = 0.0f;
+  if (field) tauEye = field->integral(e, e + v * static_cast<float>(chord.t0));
+  auto eyeLength = [&](double t) {
+    if (!field) return static_cast<float>(t);
+    if (t > tauT) {
+      tauEye += field->integral(e + v * static_cast<float>(tauT), e + v * static_cast<float>(t));
+      tauT = t;
+    }
+    return tauEye;
+  };
 
   auto pointAt = [&](double phi, glm::vec3& x, glm::vec3& w, float& r) {
     const double t = tc + dist * std::tan(phi);
@@ -110,7 +130,10 @@ glm::vec3 inScatterOneBeam(const Bvh& bvh, const MediumState& medium, const Acti
     if (intensity == glm::vec3(0.0f)) return glm::vec3(0.0f);
     // cos a = dot(w_in, w_out) with w_in = w (the way the light travels), w_out = -v.
     const float p = phaseFunction(medium, -glm::dot(w, v));
-    return intensity * (p * std::exp(-sigmaT * (r + static_cast<float>(t))));
+    if (!field) return intensity * (p * std::exp(-sigmaT * (r + static_cast<float>(t))));
+    // sigma_s(x) = D(x) sigma_s, and both transmittances integrals of sigma_t(x).
+    const float path = field->integral(lens, x) + eyeLength(t);
+    return intensity * (field->sample(x) * p * std::exp(-sigmaT * path));
   };
   auto intensityAt = [&](double phi) {
     glm::vec3 x, w;
@@ -188,7 +211,8 @@ glm::vec3 shadeSurface(const Bvh& bvh, const FrameState& frame, const std::vecto
     const glm::vec3 d = lifted - lens;
     const float len = glm::length(d);
     if (len > 0.0f && !visibleFromLens(bvh, lens, d / len, len + kShadowEndGapM, o)) continue;
-    direct += intensity * (cosine * std::exp(-sigmaT * r) / (r * r));
+    const float path = frame.medium.density ? frame.medium.density->integral(lens, s.positionM) : r;
+    direct += intensity * (cosine * std::exp(-sigmaT * path) / (r * r));
   }
   return albedo / kPi * direct + albedo * frame.medium.ambient + emission;
 }
@@ -275,7 +299,7 @@ PixelRadiance radiance(const Bvh& bvh, const FrameState& frame,
     out.hitLens = true;
     out.depthM = lens.tM;
   }
-  const float transmit = std::exp(-frame.medium.extinction() * out.depthM);
+  const float transmit = std::exp(-frame.medium.extinction() * densityLength(frame.medium, e, e + v * out.depthM));
   if (out.hitLens) {
     out.surface = lensLuminance(*lens.beam, e) * transmit;
   } else if (body.box) {

@@ -4,10 +4,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "atmosphere/density_field.h"
 #include "fixtures/beam_optics.h"
 #include "fixtures/body.h"
 #include "fixtures/pose.h"
@@ -37,6 +39,9 @@ struct MediumState {
   float g = 0.0f;           // HG asymmetry
   glm::vec3 ambient{0.0f};
   glm::vec3 background{0.0f};
+  // D(x), multiplying sigma_s and sigma_a (docs/physics.md, "A medium that is not uniform");
+  // none: D = 1 everywhere, the uniform medium.
+  std::shared_ptr<const DensityField> density;
   float extinction() const { return scattering + absorption; }
 };
 

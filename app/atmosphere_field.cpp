@@ -1,0 +1,52 @@
+#include "app/atmosphere_field.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace haze {
+
+double densityTimeS(const DensitySpec& spec, double clockS) {
+  return spec.warmupS + (spec.still ? 0.0 : std::max(clockS, 0.0));
+}
+
+bool densityMoves(const AtmosphereDef& atmosphere) {
+  return atmosphere.density && !atmosphere.density->still && !atmosphere.density->hazers.empty();
+}
+
+std::shared_ptr<const DensityField> AtmosphereField::at(const Show& show, const glm::vec3& venueMinM,
+                                                        const glm::vec3& venueMaxM, double clockS,
+                                                        std::vector<std::string>& warnings) {
+  if (!show.atmosphere.density) {
+    sim_.reset();
+    last_.reset();
+    return nullptr;
+  }
+  const DensitySpec& spec = *show.atmosphere.density;
+  const DensityGrid grid = densityGrid(spec, venueMinM, venueMaxM);
+  const bool same = sim_ && spec == spec_ && grid.minM == grid_.minM && grid.maxM == grid_.maxM &&
+                    grid.n[0] == grid_.n[0] && grid.n[1] == grid_.n[1] && grid.n[2] == grid_.n[2];
+  if (!same) {
+    sim_ = std::make_unique<DensitySim>(spec, grid);
+    spec_ = spec;
+    grid_ = grid;
+    last_.reset();
+    for (int i : sim_->hazersClamped()) {
+      const glm::vec3 p = spec.hazers[static_cast<size_t>(i)].positionM;
+      char text[1024];
+      std::snprintf(text, sizeof text,
+                    "%s: /atmosphere/density/hazers/%d/position: the hazer at [%g, %g, %g] is outside the density "
+                    "grid [%g, %g, %g]..[%g, %g, %g] (the venue's bounds); its haze enters at the nearest cell inside",
+                    show.file.string().c_str(), i, p.x, p.y, p.z, grid.minM.x, grid.minM.y, grid.minM.z, grid.maxM.x,
+                    grid.maxM.y, grid.maxM.z);
+      warnings.emplace_back(text);
+    }
+  }
+  const double t = densityTimeS(spec, clockS);
+  if (!last_ || t != lastTimeS_) {
+    last_ = std::make_shared<const DensityField>(sim_->fieldAt(t));
+    lastTimeS_ = t;
+  }
+  return last_;
+}
+
+}  // namespace haze
