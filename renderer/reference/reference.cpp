@@ -211,7 +211,7 @@ glm::vec3 shadeSurface(const Bvh& bvh, const FrameState& frame, const std::vecto
     const glm::vec3 d = lifted - lens;
     const float len = glm::length(d);
     if (len > 0.0f && !visibleFromLens(bvh, lens, d / len, len + kShadowEndGapM, o)) continue;
-    const float path = frame.medium.density ? frame.medium.density->integral(lens, s.positionM) : r;
+    const float path = frame.medium.density ? frame.medium.density->integral(lens, position) : r;
     direct += intensity * (cosine * std::exp(-sigmaT * path) / (r * r));
   }
   return albedo / kPi * direct + albedo * frame.medium.ambient + emission;
