@@ -44,6 +44,8 @@ broken() {
 
 if [ -f "$repo/examples/demo/demo.haze.json" ]; then
   valid "$repo/examples/demo/demo.haze.json"
+  # The demo's rig in air that is not uniform (docs/shows.md, "Density").
+  valid "$repo/examples/demo/air.haze.json"
 else
   echo "FAIL: the bundled demo show examples/demo/demo.haze.json is missing"
   fail=$((fail + 1))
