@@ -4,36 +4,9 @@
 #include <cstddef>
 #include <tuple>
 
-#include "shaders/interface.h"
+#include "renderer/gpu_venue.h"
 
 namespace haze {
-namespace {
-
-struct Vertex {  // venue.vert.glsl's inputs, as GpuVenue lays them out
-  glm::vec3 position;
-  glm::vec3 normal;
-  float u, v;
-};
-static_assert(sizeof(Vertex) == 32, "body vertices use the venue's layout (venue.vert.glsl)");
-constexpr GLuint kVertexBufferBinding = 0;
-
-}  // namespace
-
-GpuBodies::GpuBodies() {
-  struct Attribute {
-    GLuint location;
-    GLint size;
-    GLuint offset;
-  };
-  const Attribute attributes[] = {{HAZE_ATTR_POSITION, 3, offsetof(Vertex, position)},
-                                  {HAZE_ATTR_NORMAL, 3, offsetof(Vertex, normal)},
-                                  {HAZE_ATTR_UV, 2, offsetof(Vertex, u)}};
-  for (const Attribute& a : attributes) {
-    glEnableVertexArrayAttrib(vao_.id(), a.location);
-    glVertexArrayAttribFormat(vao_.id(), a.location, a.size, GL_FLOAT, GL_FALSE, a.offset);
-    glVertexArrayAttribBinding(vao_.id(), a.location, kVertexBufferBinding);
-  }
-}
 
 void GpuBodies::update(const std::vector<BodyBox>& boxes) {
   std::vector<const BodyBox*> sorted;
@@ -51,17 +24,17 @@ void GpuBodies::update(const std::vector<BodyBox>& boxes) {
     else
       draws_.push_back({first, static_cast<GLsizei>(positions.size()) - first, b->albedo});
   }
-  std::vector<Vertex> verts(positions.size());
+  std::vector<VenueVertex> verts(positions.size());
   for (size_t i = 0; i < verts.size(); ++i) verts[i] = {positions[i], normals[i], 0.0f, 0.0f};
   vertexCount_ = static_cast<GLsizei>(verts.size());
-  const GLsizeiptr bytes = static_cast<GLsizeiptr>(verts.size() * sizeof(Vertex));
+  const GLsizeiptr bytes = static_cast<GLsizeiptr>(verts.size() * sizeof(VenueVertex));
   if (bytes == 0) return;
   if (bytes > capacityBytes_) {
     // A new buffer (of the next power of two) only when the rig grows: moving heads rewrite it.
     capacityBytes_ = std::max<GLsizeiptr>(bytes, 2 * capacityBytes_);
     vertices_ = gl::Buffer("body_vertices");
     glNamedBufferStorage(vertices_.id(), capacityBytes_, nullptr, GL_DYNAMIC_STORAGE_BIT);
-    glVertexArrayVertexBuffer(vao_.id(), kVertexBufferBinding, vertices_.id(), 0, sizeof(Vertex));
+    setVenueVertexLayout(vao_.id(), vertices_.id());
   }
   glNamedBufferSubData(vertices_.id(), 0, bytes, verts.data());
 }

@@ -14,8 +14,6 @@ namespace haze {
 
 class GpuBodies {
  public:
-  GpuBodies();
-
   // Replaces the triangles with these boxes' (a few hundred bytes per fixture).
   void update(const std::vector<BodyBox>& boxes);
 

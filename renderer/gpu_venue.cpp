@@ -9,20 +9,32 @@
 namespace haze {
 namespace {
 
-struct Vertex {
-  glm::vec3 position;
-  glm::vec3 normal;
-  float u, v;
-};
-static_assert(sizeof(Vertex) == 32, "venue vertex layout is read by venue.vert.glsl");
+static_assert(sizeof(VenueVertex) == 32, "venue vertex layout is read by venue.vert.glsl");
 
 // The vertex array's one buffer binding point (a C++-side slot, not a shader interface).
 constexpr GLuint kVertexBufferBinding = 0;
 
 }  // namespace
 
+void setVenueVertexLayout(GLuint vao, GLuint buffer) {
+  glVertexArrayVertexBuffer(vao, kVertexBufferBinding, buffer, 0, sizeof(VenueVertex));
+  struct Attribute {
+    GLuint location;
+    GLint size;
+    GLuint offset;
+  };
+  const Attribute attributes[] = {{HAZE_ATTR_POSITION, 3, offsetof(VenueVertex, position)},
+                                  {HAZE_ATTR_NORMAL, 3, offsetof(VenueVertex, normal)},
+                                  {HAZE_ATTR_UV, 2, offsetof(VenueVertex, u)}};
+  for (const Attribute& a : attributes) {
+    glEnableVertexArrayAttrib(vao, a.location);
+    glVertexArrayAttribFormat(vao, a.location, a.size, GL_FLOAT, GL_FALSE, a.offset);
+    glVertexArrayAttribBinding(vao, a.location, kVertexBufferBinding);
+  }
+}
+
 GpuVenue::GpuVenue(const Venue& venue) : boundsMin_(venue.boundsMin), boundsMax_(venue.boundsMax) {
-  std::vector<Vertex> verts;
+  std::vector<VenueVertex> verts;
   std::vector<uint32_t> idx;
   std::vector<std::vector<uint32_t>> byMaterial(std::max<size_t>(venue.materials.size(), 1));
   for (const Primitive& p : venue.primitives) {
@@ -42,23 +54,10 @@ GpuVenue::GpuVenue(const Venue& venue) : boundsMin_(venue.boundsMin), boundsMax_
     idx.insert(idx.end(), byMaterial[m].begin(), byMaterial[m].end());
   }
   indexCount_ = static_cast<GLsizei>(idx.size());
-  glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(verts.size() * sizeof(Vertex)), verts.data(), 0);
+  glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(verts.size() * sizeof(VenueVertex)), verts.data(), 0);
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(idx.size() * sizeof(uint32_t)), idx.data(), 0);
-  glVertexArrayVertexBuffer(vao_.id(), kVertexBufferBinding, vertices_.id(), 0, sizeof(Vertex));
   glVertexArrayElementBuffer(vao_.id(), indices_.id());
-  struct Attribute {
-    GLuint location;
-    GLint size;
-    GLuint offset;
-  };
-  const Attribute attributes[] = {{HAZE_ATTR_POSITION, 3, offsetof(Vertex, position)},
-                                  {HAZE_ATTR_NORMAL, 3, offsetof(Vertex, normal)},
-                                  {HAZE_ATTR_UV, 2, offsetof(Vertex, u)}};
-  for (const Attribute& a : attributes) {
-    glEnableVertexArrayAttrib(vao_.id(), a.location);
-    glVertexArrayAttribFormat(vao_.id(), a.location, a.size, GL_FLOAT, GL_FALSE, a.offset);
-    glVertexArrayAttribBinding(vao_.id(), a.location, kVertexBufferBinding);
-  }
+  setVenueVertexLayout(vao_.id(), vertices_.id());
 
   for (const Texture& t : venue.textures) {
     gl::Texture tex(GL_TEXTURE_2D, "venue_texture " + t.name);

@@ -14,6 +14,15 @@
 
 namespace haze {
 
+// One vertex as venue.vert.glsl reads it; fixture bodies (gpu_bodies.h) use the same layout.
+struct VenueVertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  float u, v;
+};
+// Sets vao's attribute formats to VenueVertex and attaches buffer as its vertex buffer.
+void setVenueVertexLayout(GLuint vao, GLuint buffer);
+
 class GpuVenue {
  public:
   explicit GpuVenue(const Venue& venue);
