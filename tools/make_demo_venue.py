@@ -834,7 +834,9 @@ def build_cues():
         v[fid] = at(fid, tgt)
     for fid, tgt in ((301, (-1.0, 11.0, 6.0)), (302, (-5.5, 11.0, 10.0)), (303, (5.5, 11.0, 10.0)), (304, (1.0, 11.0, 6.0))):
         v[fid] = {**at(fid, tgt), "color": rgb(1.0, 0.55, 0.1)}
-    cues.append({"number": "4.5", "label": "Finale sweep", "fade": 5.0, "delay": 0.0, "follow": None, "values": v})
+    cues.append({"number": "4.5", "label": "Finale sweep", "fade": 5.0, "delay": 0.0, "follow": None, "values": v,
+                 # The beams circle (a ballyhoo) round their new aim, evenly spread round the cycle.
+                 "effects": [{"shape": "circle", "group": "Beams", "rate": 0.2, "size": 4.0, "spread": 360.0}]})
 
     # 5 Bows: beams and spots out, the washes open and warm over the whole deck.
     v = {}
@@ -846,6 +848,70 @@ def build_cues():
     cues.append({"number": "5", "label": "Bows", "fade": 4.0, "delay": 0.0, "follow": None, "values": v})
     # Re-key the targets from the cue's index to its number.
     return cues, {cues[int(k)]["number"]: v for k, v in targets.items()}
+
+
+# --------------------------------------------------------------------------------------------
+# Groups and palettes (show format version 2). The cues above hold every value explicitly;
+# factor_palettes moves the values named here into palettes and leaves a reference in the cue, so
+# each cue plays exactly as before (tests/cli/show_migration.sh compares every cue's state with
+# the version-1 demo kept in tests/data/shows/demo-v1.haze.json).
+
+SPOTS, WASHES, BEAMS = [101, 102, 103, 104], [201, 202, 203, 204], [301, 302, 303, 304]
+GROUPS = [("Spots", SPOTS), ("Washes", WASHES), ("Beams", BEAMS)]
+KIND_ATTRS = {"position": ("pan", "tilt"), "color": ("color",), "beam": ("zoom", "gobo", "gobo_rotation", "iris")}
+PALETTE_USES = [  # name, kind, [(cue number, fixtures)]
+    ("Warm", "color", [("1", WASHES), ("5", WASHES)]),
+    ("Warm white", "color", [("1", SPOTS)]),
+    ("Steel", "color", [("2", SPOTS)]),
+    ("Open white", "color", [("1", BEAMS), ("4", SPOTS + BEAMS)]),
+    ("Amber", "color", [("4.5", BEAMS)]),
+    ("Finale", "position", [("4", SPOTS + WASHES + BEAMS)]),
+    ("Finale cross", "position", [("4.5", SPOTS + BEAMS)]),
+    ("Narrow open", "beam", [("4", SPOTS)]),
+]
+
+
+def factor_palettes(cues):
+    by_number = {c["number"]: c for c in cues}
+    palettes = []
+    for name, kind, uses in PALETTE_USES:
+        per_fixture = {}
+        for number, fids in uses:
+            values = by_number[number]["values"]
+            for fid in fids:
+                moved = {a: values[fid].pop(a) for a in KIND_ATTRS[kind] if a in values[fid]}
+                assert moved, "palette %s: cue %s has no %s values for %d" % (name, number, kind, fid)
+                assert per_fixture.setdefault(fid, moved) == moved, "palette %s: two values for %d" % (name, fid)
+                values[fid].setdefault("palettes", {})[kind] = name
+        by_group = {}
+        for group, members in GROUPS:
+            if all(per_fixture.get(f) == per_fixture.get(members[0]) is not None for f in members):
+                by_group[group] = per_fixture[members[0]]
+                for f in members:
+                    del per_fixture[f]
+        palette = {"name": name, "kind": kind}
+        if by_group:
+            palette["groups"] = by_group
+        if per_fixture:
+            palette["fixtures"] = {str(f): v for f, v in sorted(per_fixture.items())}
+        palettes.append(palette)
+    return palettes
+
+
+def resolve_values(show, fid, values):
+    # A cue's values for one fixture with its palette references laid under them (show-format.md).
+    out = {}
+    for kind in ("all", "position", "color", "beam"):
+        name = values.get("palettes", {}).get(kind)
+        if name is None:
+            continue
+        palette = next(p for p in show["palettes"] if p["name"] == name and p["kind"] == kind)
+        for group in show["groups"]:
+            if fid in group["fixtures"] and group["name"] in palette.get("groups", {}):
+                out.update(palette["groups"][group["name"]])
+        out.update(palette.get("fixtures", {}).get(str(fid), {}))
+    out.update({k: v for k, v in values.items() if k != "palettes"})
+    return out
 
 
 # --------------------------------------------------------------------------------------------
@@ -908,13 +974,13 @@ def to_json(value, indent=0):
 
 def compact_values(values):
     # One fixture (or one fixture's cue values) on one line: small and easy to diff.
-    return "{ " + ", ".join(json.dumps(k) + ": " + (inline_json(v) if isinstance(v, dict) else to_json(v))
+    return "{ " + ", ".join(json.dumps(k) + ": " + (compact_values(v) if isinstance(v, dict) else to_json(v))
                             for k, v in values.items()) + " }"
 
 
-def write_show(path, cues):
+def write_show(path, cues, palettes):
     show = {
-        "format": "haze-show", "version": 1,
+        "format": "haze-show", "version": 2,
         "venue": {"gltf": "venue/theatre.gltf"},
         "atmosphere": {"scattering": 0.03, "absorption": 0.0, "phase": "hazy", "g": 0.0, "ambient": 0.25},
         "cameras": [
@@ -940,12 +1006,28 @@ def write_show(path, cues):
     out.append('  "fixtures": [')
     out.append(",\n".join("    " + compact_values(f) for f in fixtures))
     out.append("  ],")
+    out.append('  "groups": [')
+    out.append(",\n".join("    " + compact_values({"name": g, "fixtures": m}) for g, m in GROUPS))
+    out.append("  ],")
+    out.append('  "palettes": [')
+    pal_txt = []
+    for p in palettes:
+        parts = ['    { "name": %s, "kind": %s' % (json.dumps(p["name"]), json.dumps(p["kind"]))]
+        for section in ("groups", "fixtures"):
+            if section in p:
+                parts.append('      "%s": {\n' % section + ",\n".join(
+                    "        %s: %s" % (json.dumps(k), compact_values(v)) for k, v in p[section].items()) + " }")
+        pal_txt.append(",\n".join(parts) + " }")
+    out.append(",\n".join(pal_txt))
+    out.append("  ],")
     out.append('  "cue_lists": [')
     out.append('    { "name": "Main",')
     out.append('      "cues": [')
     cue_txt = []
     for c in cues:
         head = ", ".join(json.dumps(k) + ": " + to_json(c[k]) for k in ("number", "label", "fade", "delay", "follow"))
+        if "effects" in c:
+            head += ',\n          "effects": [' + ", ".join(compact_values(e) for e in c["effects"]) + "]"
         vals = ",\n".join('            "%d": %s' % (fid, compact_values(vv)) for fid, vv in sorted(c["values"].items()))
         cue_txt.append("        { " + head + ',\n          "values": {\n' + vals + "\n          } }")
     out.append(",\n".join(cue_txt))
@@ -995,7 +1077,7 @@ def check_show(show_path, tris, targets):
         print("Cue %s %s (fade %.1f s, delay %.1f s, follow %s)" % (cue["number"], cue["label"], cue["fade"],
                                                                    cue["delay"], cue["follow"]))
         for fid, vals in cue["values"].items():
-            state[int(fid)].update(vals)
+            state[int(fid)].update(resolve_values(show, int(fid), vals))
         for fid in sorted(state):
             s, f = state[fid], fixtures[fid]
             prof = profiles[f["profile"]]
@@ -1065,7 +1147,7 @@ def main():
             f.write(to_json(prof) + "\n")
     cues, targets = build_cues()
     show_path = os.path.join(DEMO, "demo.haze.json")
-    write_show(show_path, cues)
+    write_show(show_path, cues, factor_palettes(cues))
     for f in FIXTURES:
         print("fixture %d %-13s at %s rotation %s" % (f["id"], f["name"], tuple(round(c, 3) for c in f["position"]),
                                                        f["rotation"]))

@@ -200,10 +200,10 @@ TEST(Palettes, BrokenReferencesAreRefusedAtTheirPlace) {
   EXPECT_EQ(p.problems[0].place, "/palettes/0/fixtures/2/palettes");
 }
 
-// The demo show (format version 1) reads as version 2, saves as version 2, and every cue plays
+// The demo as it was in format version 1 (tests/data/shows/demo-v1.haze.json) reads as version 2, saves as version 2, and every cue plays
 // the same, at its full state and through its fade, from the saved file.
 TEST(Palettes, VersionOneDemoMigratesWithoutLoss) {
-  const auto demo = std::filesystem::path(HAZE_SOURCE_DIR) / "examples/demo/demo.haze.json";
+  const auto demo = std::filesystem::path(HAZE_SOURCE_DIR) / "tests/data/shows/demo-v1.haze.json";
   auto v1 = loadShow(demo);
   ASSERT_TRUE(v1.ok()) << v1.error().str();
   EXPECT_EQ(v1->fileVersion, 1);
