@@ -13,6 +13,23 @@ bool densityMoves(const AtmosphereDef& atmosphere) {
   return atmosphere.density && !atmosphere.density->still && !atmosphere.density->hazers.empty();
 }
 
+std::vector<std::string> hazerWarnings(const Show& show, const DensityGrid& grid) {
+  std::vector<std::string> warnings;
+  if (!show.atmosphere.density) return warnings;
+  const DensitySpec& spec = *show.atmosphere.density;
+  for (int i : hazersOutside(spec, grid)) {
+    const glm::vec3 p = spec.hazers[static_cast<size_t>(i)].positionM;
+    char text[1024];
+    std::snprintf(text, sizeof text,
+                  "%s: /atmosphere/density/hazers/%d/position: the hazer at [%g, %g, %g] is outside the density "
+                  "grid [%g, %g, %g]..[%g, %g, %g] (%s); its haze enters at the nearest cell inside",
+                  show.file.string().c_str(), i, p.x, p.y, p.z, grid.minM.x, grid.minM.y, grid.minM.z, grid.maxM.x,
+                  grid.maxM.y, grid.maxM.z, spec.boundsMinM || spec.boundsMaxM ? "the density's bounds" : "the venue's bounds");
+    warnings.emplace_back(text);
+  }
+  return warnings;
+}
+
 std::shared_ptr<const DensityField> AtmosphereField::at(const Show& show, const glm::vec3& venueMinM,
                                                         const glm::vec3& venueMaxM, double clockS,
                                                         std::vector<std::string>& warnings) {
@@ -30,16 +47,7 @@ std::shared_ptr<const DensityField> AtmosphereField::at(const Show& show, const 
     spec_ = spec;
     grid_ = grid;
     last_.reset();
-    for (int i : sim_->hazersClamped()) {
-      const glm::vec3 p = spec.hazers[static_cast<size_t>(i)].positionM;
-      char text[1024];
-      std::snprintf(text, sizeof text,
-                    "%s: /atmosphere/density/hazers/%d/position: the hazer at [%g, %g, %g] is outside the density "
-                    "grid [%g, %g, %g]..[%g, %g, %g] (the venue's bounds); its haze enters at the nearest cell inside",
-                    show.file.string().c_str(), i, p.x, p.y, p.z, grid.minM.x, grid.minM.y, grid.minM.z, grid.maxM.x,
-                    grid.maxM.y, grid.maxM.z);
-      warnings.emplace_back(text);
-    }
+    for (std::string& w : hazerWarnings(show, grid)) warnings.push_back(std::move(w));
   }
   const double t = densityTimeS(spec, clockS);
   if (!last_ || t != lastTimeS_) {

@@ -17,6 +17,9 @@ double densityTimeS(const DensitySpec& spec, double clockS);
 // Whether the field changes with the playback clock (hazers running, not held still).
 bool densityMoves(const AtmosphereDef& atmosphere);
 
+// One warning per hazer outside the grid, naming the show file and the hazer's JSON pointer.
+std::vector<std::string> hazerWarnings(const Show& show, const DensityGrid& grid);
+
 class AtmosphereField {
  public:
   // The field at playback time clockS, or null when the show has no density (the uniform

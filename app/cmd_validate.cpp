@@ -1,11 +1,14 @@
 // `haze validate SHOW [--save-as OUT]`: every problem of a show, one line each on stderr
 // ("file:pointer: sentence"), exit 1; a valid show prints a one-line summary on stdout (and a
 // line saying so when an older format version was migrated) and exits 0. --save-as writes the
-// valid show as read, in the newest format version, to OUT. Bad arguments exit 2.
+// valid show as read, in the newest format version, to OUT. A hazer outside the venue is a
+// warning (the venue is read for that only). Bad arguments exit 2.
 #include <iostream>
 
+#include "app/atmosphere_field.h"
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "renderer/scene/venue.h"
 #include "shows/show_save.h"
 #include "shows/show_validate.h"
 
@@ -13,7 +16,20 @@ namespace haze {
 
 namespace {
 constexpr const char* kUsage = "usage: haze validate SHOW [--save-as OUT]";
+
+// Hazers are checked against the venue's box, which the show file alone does not give: the
+// venue is read only for a show that has hazers. A warning, as `haze render` gives it.
+void warnAboutHazers(const Show& show) {
+  if (!show.atmosphere.density || show.atmosphere.density->hazers.empty() || show.venueGltf.empty()) return;
+  auto venue = loadVenue(show.resolve(show.venueGltf));
+  if (!venue) {
+    std::cerr << "haze: warning: the hazers were not checked against the venue: " << venue.error().str() << "\n";
+    return;
+  }
+  const DensityGrid grid = densityGrid(*show.atmosphere.density, venue->boundsMin, venue->boundsMax);
+  for (const std::string& w : hazerWarnings(show, grid)) std::cerr << "haze: warning: " << w << "\n";
 }
+}  // namespace
 
 int runValidate(const Args& args) {
   std::string file, saveAs;
@@ -41,6 +57,7 @@ int runValidate(const Args& args) {
     std::cout << file << ": format version " << show->fileVersion << ", migrated to version " << kShowFormatVersion
               << " as it was read (version 2 adds groups and palettes; nothing else changes); saving writes version "
               << kShowFormatVersion << "\n";
+  if (show) warnAboutHazers(*show);
   if (!saveAs.empty() && show) {
     SaveOptions options;
     options.keepBackup = false;

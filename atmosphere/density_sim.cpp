@@ -121,16 +121,25 @@ DensitySim::DensitySim(const DensitySpec& spec, const DensityGrid& grid) : spec_
     // The haze enters the cell just in front of the nozzle.
     const glm::vec3 at = spec.hazers[i].positionM + dirs[i] * (0.5f * std::min({h_.x, h_.y, h_.z}));
     int c[3];
-    bool outside = false;
     for (int k = 0; k < 3; ++k) {
       const float u = (at[k] - grid.minM[k]) / h_[k];
-      outside = outside || spec.hazers[i].positionM[k] < grid.minM[k] || spec.hazers[i].positionM[k] > grid.maxM[k];
       c[k] = std::clamp(static_cast<int>(std::floor(u)), 0, grid.n[k] - 1);
     }
-    if (outside) clamped_.push_back(static_cast<int>(i));
     sourceCell_.push_back(shape.index(c[0], c[1], c[2]));
   }
+  clamped_ = hazersOutside(spec, grid);
   reset();
+}
+
+std::vector<int> hazersOutside(const DensitySpec& spec, const DensityGrid& grid) {
+  std::vector<int> out;
+  for (size_t i = 0; i < spec.hazers.size(); ++i) {
+    const glm::vec3 p = spec.hazers[i].positionM;
+    bool outside = false;
+    for (int k = 0; k < 3; ++k) outside = outside || p[k] < grid.minM[k] || p[k] > grid.maxM[k];
+    if (outside) out.push_back(static_cast<int>(i));
+  }
+  return out;
 }
 
 void DensitySim::reset() {

@@ -20,6 +20,9 @@ struct DensityGrid {
 };
 DensityGrid densityGrid(const DensitySpec& spec, const glm::vec3& venueMinM, const glm::vec3& venueMaxM);
 
+// The hazers (their indices in spec.hazers) standing outside the grid's box.
+std::vector<int> hazersOutside(const DensitySpec& spec, const DensityGrid& grid);
+
 // Bytes the simulation of a grid holds (the field, its step scratch and three face velocities).
 long long densitySimBytes(const DensityGrid& grid);
 

@@ -2,7 +2,7 @@
 # atmosphere.density from the command line (docs/shows.md, "Density"): `haze state --at` gives
 # the field at that time, a render at two times differs as the plume drifts, a grid too large
 # and a negative output are refused naming their place, a hazer outside the venue is warned
-# about (file and place), and `haze bench --density` gives the cost ratio.
+# about (file and place) by render, state and validate, and `haze bench --density` gives the cost ratio.
 set -uo pipefail
 haze=$1; root=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -31,10 +31,16 @@ check "state gives the field at warmup + --at" \
 check "the hazer outside the venue is named with file and place" \
   'grep -q "d.haze.json: /atmosphere/density/hazers/1/position: the hazer at \[30, 1, 0\] is outside" "$tmp/err"'
 
+with "$tmp/still.haze.json" '{"base": 0.5, "grid": 16, "still": true, "hazers": [{"position": [-0.8, 0.2, 0], "output": 0.05}]}'
+"$haze" validate "$tmp/d.haze.json" >"$tmp/out" 2>"$tmp/err"; rc=$?
+check "validate warns about the hazer outside the venue, with file and place, and exits 0 (rc $rc: $(cat "$tmp/err"))" \
+  '[ $rc -eq 0 ] && [ "$(grep -c "is outside the density grid" "$tmp/err")" = 1 ] && grep -q "d.haze.json: /atmosphere/density/hazers/1/position: the hazer at \[30, 1, 0\] is outside" "$tmp/err"'
+"$haze" validate "$tmp/still.haze.json" >"$tmp/out" 2>"$tmp/err" 
+check "validate is silent about a hazer inside the venue ($(cat "$tmp/err"))" '[ ! -s "$tmp/err" ]'
+
 "$haze" render "$tmp/d.haze.json" --cue 1 --at 40 --width 80 --height 45 -o "$tmp/a.pfm" 2>/dev/null
 "$haze" render "$tmp/d.haze.json" --cue 1 --at 20 --width 80 --height 45 -o "$tmp/b.pfm" 2>/dev/null
 check "renders at two times differ (the haze drifts)" '[ -s "$tmp/a.pfm" ] && [ -s "$tmp/b.pfm" ] && ! cmp -s "$tmp/a.pfm" "$tmp/b.pfm"'
-with "$tmp/still.haze.json" '{"base": 0.5, "grid": 16, "still": true, "hazers": [{"position": [-0.8, 0.2, 0], "output": 0.05}]}'
 "$haze" render "$tmp/still.haze.json" --cue 1 --at 40 --width 80 --height 45 -o "$tmp/c.pfm" 2>/dev/null
 "$haze" render "$tmp/still.haze.json" --cue 1 --at 20 --width 80 --height 45 -o "$tmp/e.pfm" 2>/dev/null
 check "a still field is the same at every time" '[ -s "$tmp/c.pfm" ] && cmp -s "$tmp/c.pfm" "$tmp/e.pfm"'
