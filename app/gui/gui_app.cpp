@@ -187,6 +187,19 @@ void followHeads(Gui& gui) {
   gui.stage = gui.heads->advance(gui.stage, gui.nowS, !gui.live);
 }
 
+// With HAZE_GUI_FRAME_FILE set, the number of frames presented so far, rewritten (atomically)
+// after every swap: the GUI tests wait on it for their input to be handled and drawn instead of
+// sleeping for a guessed time, which fails when a loaded machine makes frames slow.
+void publishFrameCount(int frame) {
+  static const char* path = std::getenv("HAZE_GUI_FRAME_FILE");
+  if (!path || !*path) return;
+  const std::string tmp = std::string(path) + ".tmp";
+  if (std::FILE* f = std::fopen(tmp.c_str(), "w")) {
+    std::fprintf(f, "%d\n", frame);
+    if (std::fclose(f) == 0) std::rename(tmp.c_str(), path);
+  }
+}
+
 // Every panel of one frame, from input to ImGui's draw lists.
 void drawPanels(Gui& gui, int winW, int winH) {
   ImGui_ImplOpenGL3_NewFrame();
@@ -405,6 +418,7 @@ int runGui(const Args& args) {
       break;
     }
     glfwSwapBuffers(gui.window);
+    publishFrameCount(frame);
   }
 
   ImGui_ImplOpenGL3_Shutdown();

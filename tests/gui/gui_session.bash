@@ -2,6 +2,13 @@
 # (xdotool, through XTEST): clicks, key taps, and keys held for a few frames where an ImGui
 # widget reads them (ImGui 1.86 sees a key only if it is down at a frame, and a frame on
 # llvmpipe can take longer than a tap). Window screenshots with ImageMagick's import.
+# Nothing here sleeps for a guessed time and hopes the GUI kept up: haze writes the number of
+# frames it has presented to $HAZE_GUI_FRAME_FILE, and every input is followed by settle, which
+# waits for four more frames: one polls the event, and what it starts can take a frame or two
+# more to show (a click selects on the release, a popup focuses its field the frame after it
+# opens). On a
+# loaded machine frames get slow and the tests wait longer; they fail only if haze draws nothing
+# for 300 s (an import on a loaded machine holds one frame for long).
 # Needs: $root, $tmp; tests/gui/xvfb.bash sourced and start_xvfb run.
 for tool in xdotool import compare convert; do
   command -v $tool >/dev/null || { echo "FAIL: $tool is not installed (make deps installs it)"; exit 1; }
@@ -12,8 +19,30 @@ finish() { echo "$pass passed, $fail failed"; [ $fail -eq 0 ]; }
 
 # start_haze NAME-IN-TITLE ARGS...: runs haze, waits for its window to be mapped (focusing a
 # window not yet mapped is an X error, BadMatch), gives it the input focus.
+frames() { local n; n=$(cat "$HAZE_GUI_FRAME_FILE" 2>/dev/null); echo "${n:-0}"; }
+# settle [N]: waits until haze has presented N (default 4) more frames, or has exited.
+settle() {
+  local target=$(( $(frames) + ${1:-4} )) end=$((SECONDS + 300))
+  while [ "$(frames)" -lt $target ]; do
+    kill -0 $pid 2>/dev/null || return 0
+    [ $SECONDS -lt $end ] || { echo "FAIL: haze presented no new frame for 300 s (at frame $(frames))"; exit 1; }
+    sleep 0.05
+  done
+}
+# wait_until SECONDS CONDITION: re-checks CONDITION (a shell expression) after every frame.
+wait_until() {
+  local end=$((SECONDS + $1))
+  until eval "$2"; do
+    [ $SECONDS -lt $end ] || return 1
+    kill -0 $pid 2>/dev/null || { eval "$2"; return; }
+    settle 1
+  done
+}
+
 start_haze() {
   local name=$1; shift
+  export HAZE_GUI_FRAME_FILE="$tmp/frames"
+  rm -f "$HAZE_GUI_FRAME_FILE"
   "$haze" open "$@" >"$tmp/haze.out" 2>&1 &
   pid=$!
   win=""
@@ -26,13 +55,20 @@ start_haze() {
   [ -n "$win" ] || { echo "FAIL: no window named '$name'"; cat "$tmp/haze.out"; exit 1; }
   # No window manager under Xvfb: nothing gives the window the keyboard unless asked.
   xdotool windowfocus --sync "$win"
-  sleep 1.5
+  settle 3
 }
-click() { xdotool mousemove --window "$win" "$1" "$2"; sleep 0.3; xdotool click 1; sleep 1.5; }
-tap() { xdotool key "$@"; sleep 0.6; }
-hold() { xdotool keydown "$1"; sleep 0.5; xdotool keyup "$1"; sleep 0.5; }
-type_text() { xdotool type --delay 60 "$1"; sleep 0.5; }
-shot() { import -window "$win" "$tmp/$1.png" 2>/dev/null; [ -n "${HAZE_GUI_SHOTS:-}" ] && cp "$tmp/$1.png" "$HAZE_GUI_SHOTS/"; true; }
+click() { xdotool mousemove --window "$win" "$1" "$2"; settle; xdotool click 1; settle; }
+tap() { xdotool key "$@"; settle; }
+# A key an ImGui widget reads must be down when a frame starts: held over four frames.
+hold() { xdotool keydown "$1"; settle; xdotool keyup "$1"; settle; }
+type_text() { xdotool type --delay 60 "$1"; settle; }
+# A screenshot of a frame begun after the call (what came before it has been drawn).
+shot() {
+  settle
+  import -window "$win" "$tmp/$1.png" 2>/dev/null
+  [ -n "${HAZE_GUI_SHOTS:-}" ] && cp "$tmp/$1.png" "$HAZE_GUI_SHOTS/"
+  true
+}
 title() { xdotool getwindowname "$win"; }
 # RMSE (0..1) between two shots, optionally of a region WxH+X+Y.
 difference() {
@@ -48,8 +84,8 @@ yellow_pixels() {
   convert "$tmp/$1.png" -crop "$2" +repage -fuzz 12% -fill white -opaque "rgb(255,220,40)" \
     -fill black +opaque white -format "%[fx:mean*w*h]" info: | cut -d. -f1
 }
-# Waits up to 10 s for haze to exit; sets rc.
+# Waits up to 120 s for haze to exit (it may be mid-frame on a loaded machine); sets rc.
 wait_exit() {
-  for _ in $(seq 50); do kill -0 $pid 2>/dev/null || break; sleep 0.2; done
+  for _ in $(seq 600); do kill -0 $pid 2>/dev/null || break; sleep 0.2; done
   if kill -0 $pid 2>/dev/null; then rc=timeout; else wait $pid; rc=$?; fi
 }

@@ -19,7 +19,7 @@ tap ctrl+i                 # the path popup, its field focused
 hold ctrl+a
 type_text "$tmp/rig.mvr"
 hold Return
-for _ in $(seq 50); do [[ "$(title)" == "haze - rig.haze.json" ]] && break; sleep 0.3; done
+wait_until 300 '[[ "$(title)" == "haze - rig.haze.json" ]]'
 check "the imported show is open (title '$(title)')" '[[ "$(title)" == "haze - rig.haze.json" ]]'
 check "the show was written beside the MVR" '[ -s "$tmp/rig.haze.json" ] && [ -d "$tmp/rig_gdtf" ]'
 check "haze validate accepts it" '"$haze" validate "$tmp/rig.haze.json" >/dev/null 2>&1'
