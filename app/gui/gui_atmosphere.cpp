@@ -1,13 +1,121 @@
 // The atmosphere tab: scattering, absorption, phase function (and g for Henyey-Greenstein),
-// ambient light (docs/physics.md), each a setAtmosphere command (a drag is one undo step); and the
+// ambient light (docs/physics.md), each a setAtmosphere command (a drag is one undo step); the
+// density field (docs/shows.md, "Density"): base, ground fog, air flow and hazers; and the
 // view's render quality, exposure and bloom, which are not part of the show.
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "app/gui/gui.h"
 #include "shows/dmx/udp_receiver.h"
 
 namespace haze {
+
+namespace {
+
+// Every change of the density re-runs its simulation over the warm-up, so its widgets edit a
+// draft and the show takes the draft when the widget is let go: one undo step and one
+// simulation per change, not one per frame of a drag. One window, so one draft.
+void drawDensity(Gui& gui) {
+  ShowDocument& doc = *gui.doc;
+  AtmosphereDef a = doc.show().atmosphere;
+  static std::optional<DensitySpec> draft;
+  static bool editing = false;
+  auto commit = [&](const std::optional<DensitySpec>& spec) {
+    a.density = spec;
+    Status s = doc.run(setAtmosphere(a), false);
+    if (!s) gui.say(s.error().str(), true);
+    editing = false;
+  };
+  bool on = a.density.has_value();
+  if (ImGui::Checkbox("Density field", &on)) {
+    // A new field: even haze at the scattering above, which hazers and fog then add to.
+    commit(on ? std::optional<DensitySpec>(DensitySpec{}) : std::nullopt);
+    return;
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Haze that varies in space: ground fog, hazers and a room air flow (docs/shows.md)");
+  if (!a.density) return;
+  if (!editing || !draft) draft = *a.density;
+  DensitySpec& d = *draft;
+  bool active = false, done = false;
+  auto edited = [&](bool) {
+    active = active || ImGui::IsItemActive();
+    done = done || ImGui::IsItemDeactivatedAfterEdit();
+  };
+  ImGui::SetNextItemWidth(110);
+  edited(ImGui::DragFloat("Base density", &d.base, 0.01f, 0.0f, 20.0f, "%.2f"));
+  bool fog = d.fog.has_value();
+  if (ImGui::Checkbox("Ground fog", &fog)) {
+    d.fog = fog ? std::optional<FogLayerSpec>(FogLayerSpec{.density = 5.0f}) : std::nullopt;
+    done = true;
+  }
+  if (d.fog) {
+    ImGui::SetNextItemWidth(110);
+    edited(ImGui::DragFloat("Fog density", &d.fog->density, 0.05f, 0.0f, 100.0f, "%.2f"));
+    ImGui::SetNextItemWidth(110);
+    edited(ImGui::DragFloat("Fog top m", &d.fog->heightM, 0.01f, 0.0f, 20.0f, "%.2f"));
+    ImGui::SetNextItemWidth(110);
+    edited(ImGui::DragFloat("Fog falloff m", &d.fog->falloffM, 0.01f, 0.01f, 10.0f, "%.2f"));
+  }
+  ImGui::SetNextItemWidth(160);
+  edited(ImGui::DragFloat3("Air flow m/s", &d.airFlowMps.x, 0.01f, -5.0f, 5.0f, "%.2f"));
+  ImGui::SetNextItemWidth(110);
+  edited(ImGui::DragFloat("Mixing m2/s", &d.mixingM2ps, 0.005f, 0.0f, 5.0f, "%.3f"));
+  float warmup = static_cast<float>(d.warmupS);
+  ImGui::SetNextItemWidth(110);
+  edited(ImGui::DragFloat("Warm-up s", &warmup, 1.0f, 0.0f, 600.0f, "%.0f"));
+  d.warmupS = warmup;
+  if (ImGui::Checkbox("Held still", &d.still)) done = true;
+  ImGui::SetNextItemWidth(160);
+  edited(ImGui::DragInt3("Grid cells", d.grid, 0.5f, 4, 128));
+  for (size_t i = 0; i < d.hazers.size(); ++i) {
+    HazerSpec& h = d.hazers[i];
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::Text("Hazer %zu", i + 1);
+    ImGui::SameLine();
+    const bool remove = ImGui::SmallButton("Remove");
+    ImGui::SetNextItemWidth(160);
+    edited(ImGui::DragFloat3("Position m", &h.positionM.x, 0.02f, -1000.0f, 1000.0f, "%.2f"));
+    ImGui::SetNextItemWidth(160);
+    edited(ImGui::DragFloat3("Blows to", &h.direction.x, 0.01f, -1.0f, 1.0f, "%.2f"));
+    ImGui::SetNextItemWidth(110);
+    edited(ImGui::DragFloat("Output m3/s", &h.output, 0.05f, 0.0f, 100.0f, "%.2f"));
+    ImGui::SetNextItemWidth(110);
+    edited(ImGui::DragFloat("Spread deg", &h.spreadDeg, 0.5f, 1.0f, 120.0f, "%.0f"));
+    ImGui::SetNextItemWidth(110);
+    edited(ImGui::DragFloat("Fan m/s", &h.speedMps, 0.05f, 0.0f, 20.0f, "%.2f"));
+    ImGui::PopID();
+    if (remove) {
+      d.hazers.erase(d.hazers.begin() + static_cast<std::ptrdiff_t>(i));
+      done = true;
+      break;
+    }
+  }
+  if (ImGui::Button("Add hazer")) {
+    // In the stage-left wing of the venue's box, a metre up, blowing across it.
+    const Venue& v = doc.venue();
+    HazerSpec h;
+    h.positionM = {v.boundsMin.x + 0.1f * (v.boundsMax.x - v.boundsMin.x), v.boundsMin.y + 1.0f,
+                   0.5f * (v.boundsMin.z + v.boundsMax.z)};
+    h.direction = {1.0f, 0.0f, 0.0f};
+    d.hazers.push_back(h);
+    done = true;
+  }
+  ImGui::TextWrapped("The window shows the field after its warm-up (%s).",
+                     d.still ? "held still" : "as at GO; renders and video let it drift");
+  editing = active;
+  if (done) {
+    d.base = std::max(d.base, 0.0f);
+    for (int& n : d.grid) n = std::clamp(n, 4, 128);
+    for (HazerSpec& h : d.hazers)
+      if (h.direction == glm::vec3(0.0f)) h.direction = {1.0f, 0.0f, 0.0f};
+    commit(d);
+  }
+}
+
+}  // namespace
 
 void drawAtmosphereTab(Gui& gui) {
   ShowDocument& doc = *gui.doc;
@@ -47,6 +155,7 @@ void drawAtmosphereTab(Gui& gui) {
     Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
     if (!s) gui.say(s.error().str(), true);
   }
+  drawDensity(gui);
 
   ImGui::Separator();
   ImGui::TextUnformatted("View (not saved in the show)");
