@@ -6,6 +6,8 @@
 
 #include <algorithm>
 
+#include <glm/common.hpp>
+
 #include "shows/cue_number.h"
 #include "shows/effects.h"
 #include "shows/palettes.h"
@@ -204,6 +206,16 @@ static void applyEffects(const Show& show, const ProfileSet& profiles, const Cue
       } else if (at == "position") {
         add(a.panDeg, e.size * w * grown(ft.position), -kFree, kFree);
         add(a.tiltDeg, e.size * tiltWave * grown(ft.position), -kFree, kFree);
+      } else if (at == "color") {
+        // The wave's place among the colours (-1: the first, +1: the last), piecewise linear.
+        if (e.colors.size() >= 2) {
+          const double u = std::clamp((w + 1.0) * 0.5, 0.0, 1.0) * static_cast<double>(e.colors.size() - 1);
+          const size_t i = std::min(static_cast<size_t>(u), e.colors.size() - 2);
+          const float f = static_cast<float>(u - static_cast<double>(i));
+          const glm::vec3 target = e.colors[i] + (e.colors[i + 1] - e.colors[i]) * f;
+          const float depth = static_cast<float>(std::clamp(e.size, 0.0, 1.0) * grown(ft.color));
+          a.color = glm::clamp(a.color + (target - a.color) * depth, glm::vec3(0.0f), glm::vec3(1.0f));
+        }
       } else if (at == "pan" || at == "tilt") {
         add(at == "pan" ? a.panDeg : a.tiltDeg, e.size * w * grown(ft.position), -kFree, kFree);
       } else {

@@ -151,6 +151,9 @@ struct EffectDef {
   double size = 0.0;       // in the attribute's unit (degrees for pan, tilt and circle)
   double phaseDeg = 0.0, spreadDeg = 0.0;
   std::uint32_t seed = 0;  // random: which sequence
+  // attribute "color": the colours the wave runs through (w = -1 the first, +1 the last); size
+  // 0..1 is how far the fixture's colour goes from the cue's towards them.
+  std::vector<glm::vec3> colors;
   bool operator==(const EffectDef&) const = default;
 };
 

@@ -716,16 +716,17 @@ void readTiming(Reader& r, const json& j, const std::string& p, CueTimingDef& t)
 }
 
 constexpr const char* kEffectAttributes[] = {"intensity", "pan", "tilt", "zoom", "iris", "frost", "gobo_rotation",
-                                             "prism_rotation"};
+                                             "prism_rotation", "color"};
+constexpr size_t kMaxEffectColors = 64;
 
-// "effects": [{"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed"}]
+// "effects": [{"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed", "colors"}]
 void readEffects(Reader& r, const json& j, const std::string& ep, std::vector<EffectDef>& out) {
   if (!r.isArray(j, ep, "the cue's effects")) return;
   for (size_t i = 0; i < j.size(); ++i) {
     const json& e = j[i];
     const std::string p = ep + "/" + std::to_string(i);
     if (!r.isObject(e, p, "an effect")) continue;
-    r.onlyKeys(e, p, {"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed"});
+    r.onlyKeys(e, p, {"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed", "colors"});
     EffectDef d;
     bool ok = true;
     std::string shape;
@@ -755,14 +756,33 @@ void readEffects(Reader& r, const json& j, const std::string& ep, std::vector<Ef
       for (const char* a : kEffectAttributes) known = known || d.attribute == a;
       if (!known)
         r.problem(p + "/attribute", "an effect cannot move \"" + d.attribute + "\"; expected intensity, pan, tilt, zoom, "
-                                    "iris, frost, gobo_rotation or prism_rotation (or a circle on position)");
+                                    "iris, frost, gobo_rotation, prism_rotation or color (or a circle on position)");
+    }
+    const json* colors = r.member(e, p, "colors", false);
+    if (d.attribute == "color") {
+      if (!colors) {
+        r.problem(p + "/colors", "a colour effect needs \"colors\": the [r, g, b] colours it runs through, at least two");
+      } else if (r.isArray(*colors, p + "/colors", "the effect's colours")) {
+        if (colors->size() < 2 || colors->size() > kMaxEffectColors)
+          r.problem(p + "/colors", "expected 2 to " + std::to_string(kMaxEffectColors) + " colours, got " +
+                                       std::to_string(colors->size()));
+        for (size_t c = 0; c < colors->size() && c < kMaxEffectColors; ++c) {
+          glm::vec3 rgb(0.0f);
+          if (r.vec3((*colors)[c], p + "/colors/" + std::to_string(c), 0.0, 1.0, "an [r, g, b] colour, each 0..1", rgb))
+            d.colors.push_back(rgb);
+        }
+      }
+    } else if (colors) {
+      r.problem(p + "/colors", "\"colors\" belongs to a colour effect (attribute \"color\")");
     }
     r.stringMember(e, p, "group", true, "the name of a group in /groups", d.group, true);
     double x = 0;
     if (const json* v = r.member(e, p, "rate", true))
       if (r.number(*v, p + "/rate", -100.0, 100.0, "a rate in cycles per second", x)) d.rateHz = x;
     if (const json* v = r.member(e, p, "size", true))
-      if (r.number(*v, p + "/size", 0.0, 360.0, "a size in the attribute's unit", x)) d.size = x;
+      if (r.number(*v, p + "/size", 0.0, d.attribute == "color" ? 1.0 : 360.0,
+                   d.attribute == "color" ? "a colour effect's depth" : "a size in the attribute's unit", x))
+        d.size = x;
     if (const json* v = r.member(e, p, "phase", false))
       if (r.number(*v, p + "/phase", -3600.0, 3600.0, "a phase in degrees", x)) d.phaseDeg = x;
     if (const json* v = r.member(e, p, "spread", false))

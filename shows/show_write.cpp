@@ -273,6 +273,11 @@ ojson showJson(const Show& s) {
           if (e.phaseDeg != 0.0) j["phase"] = e.phaseDeg;
           if (e.spreadDeg != 0.0) j["spread"] = e.spreadDeg;
           if (e.shape == EffectShape::Random) j["seed"] = e.seed;
+          if (!e.colors.empty()) {
+            ojson colors = ojson::array();
+            for (const glm::vec3& c : e.colors) colors.push_back(ojson::array({c.r, c.g, c.b}));
+            j["colors"] = colors;
+          }
           effects.push_back(j);
         }
         o["effects"] = effects;

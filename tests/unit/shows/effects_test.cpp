@@ -71,6 +71,73 @@ TEST(Effects, EachShapeMatchesItsClosedForm) {
   EXPECT_EQ(player.state(103.71), stateAt(*show, *profiles, list, 0, 3.71));
 }
 
+// A colour wave: two fixtures half a cycle apart run from the cue's white towards red, then
+// blue (a sine through two colours), and a ramp through three; depth 0.8 grown with the fade.
+constexpr const char* kColorShow = R"({"format": "haze-show", "version": 2,
+  "profiles": { "wash": { "format": "haze-fixture", "version": 1, "name": "Wash",
+    "photometry": { "beam_angle": 20, "field_angle": 30, "peak_candela": 1000 } } },
+  "fixtures": [ { "id": 1, "profile": "wash" }, { "id": 2, "profile": "wash" }, { "id": 3, "profile": "wash" } ],
+  "groups": [ { "name": "Pair", "fixtures": [1, 2] }, { "name": "Third", "fixtures": [3] } ],
+  "cue_lists": [ { "name": "Main", "cues": [
+    { "number": "1", "fade": 2,
+      "values": { "1": { "intensity": 1, "color": [1, 1, 1] }, "2": { "intensity": 1, "color": [1, 1, 1] },
+                  "3": { "intensity": 1, "color": [0.5, 0.5, 0.5] } },
+      "effects": [
+        { "shape": "sine", "attribute": "color", "group": "Pair", "rate": 0.5, "size": 0.8, "spread": 180,
+          "colors": [[1, 0, 0], [0, 0, 1]] },
+        { "shape": "ramp", "attribute": "color", "group": "Third", "rate": 0.25, "size": 1,
+          "colors": [[1, 0, 0], [0, 1, 0], [0, 0, 1]] } ] } ] } ] })";
+
+TEST(Effects, ColourWavesRunThroughTheirColours) {
+  test::ScratchDir dir;
+  std::ofstream(dir.path / "colour.haze.json") << kColorShow;
+  auto show = loadShow(dir.path / "colour.haze.json");
+  ASSERT_TRUE(show.ok()) << show.error().str();
+  auto profiles = loadProfiles(*show);
+  ASSERT_TRUE(profiles.ok());
+  const glm::vec3 red(1, 0, 0), green(0, 1, 0), blue(0, 0, 1), white(1);
+  for (double t : {0.0, 0.4, 1.0, 2.0, 2.9, 5.25, 13.6}) {
+    const StageState s = stateAt(*show, *profiles, show->cueLists[0], 0, t);
+    const float depth = static_cast<float>(0.8 * std::min(1.0, t / 2.0));
+    for (int k = 0; k < 2; ++k) {
+      const double w = std::sin(2 * kPi * (0.5 * t + k * 180.0 / 2 / 360));
+      const glm::vec3 target = red + (blue - red) * static_cast<float>((w + 1) / 2);
+      const glm::vec3 want = white + (target - white) * depth;
+      const glm::vec3 got = s.at(k + 1).color;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-5) << "t " << t << " fixture " << k + 1;
+    }
+    // The ramp: -1..1 over each 4 s cycle is red -> green -> blue; depth 1 replaces the grey.
+    const double u = frac(0.25 * t) * 2;  // 0..2 along the three colours
+    const glm::vec3 target = u < 1 ? red + (green - red) * static_cast<float>(u) : green + (blue - green) * static_cast<float>(u - 1);
+    const float g = static_cast<float>(std::min(1.0, t / 2.0));
+    const glm::vec3 grey = glm::vec3(1.0f) + (glm::vec3(0.5f) - glm::vec3(1.0f)) * g;  // faded from white
+    const glm::vec3 want = grey + (target - grey) * g;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.at(3).color[c], want[c], 1e-5) << "t " << t;
+  }
+  // Saved and read back the same; the colours are in the file.
+  const std::string text = showToText(*show);
+  EXPECT_NE(text.find("\"colors\""), std::string::npos);
+  ShowParse again = parseShowText(text, dir.path / "again.haze.json");
+  ASSERT_TRUE(again.problems.empty());
+  EXPECT_EQ(again.show.cueLists[0].cues[0].effects, show->cueLists[0].cues[0].effects);
+
+  auto problemAt = [&](const std::string& from, const std::string& to) {
+    std::string t = kColorShow;
+    t.replace(t.find(from), from.size(), to);
+    ShowParse bad = parseShowText(t, dir.path / "bad.haze.json");
+    return bad.problems.empty() ? std::string("(loaded)") : bad.problems[0].place + ": " + bad.problems[0].message;
+  };
+  EXPECT_EQ(problemAt(",\n          \"colors\": [[1, 0, 0], [0, 0, 1]]", ""),
+            "/cue_lists/0/cues/0/effects/0/colors: a colour effect needs \"colors\": the [r, g, b] colours it runs "
+            "through, at least two");
+  EXPECT_EQ(problemAt("[[1, 0, 0], [0, 0, 1]]", "[[1, 0, 0]]"),
+            "/cue_lists/0/cues/0/effects/0/colors: expected 2 to 64 colours, got 1");
+  EXPECT_EQ(problemAt("\"size\": 0.8", "\"size\": 2"),
+            "/cue_lists/0/cues/0/effects/0/size: expected a colour effect's depth from 0 to 1, got 2");
+  EXPECT_EQ(problemAt("\"attribute\": \"color\", \"group\": \"Pair\"", "\"attribute\": \"iris\", \"group\": \"Pair\""),
+            "/cue_lists/0/cues/0/effects/0/colors: \"colors\" belongs to a colour effect (attribute \"color\")");
+}
+
 TEST(Effects, RandomIsDeterministicPerCycleAndSeed) {
   EffectDef e;
   e.shape = EffectShape::Random;
@@ -118,7 +185,7 @@ TEST(Effects, SaveBackAndBadEffectsAreRefused) {
             "/cue_lists/0/cues/0/effects/3/shape: unknown effect shape \"saw\"; expected sine, circle, square, ramp or random");
   EXPECT_EQ(problemAt("\"attribute\": \"iris\"", "\"attribute\": \"gobo\""),
             "/cue_lists/0/cues/0/effects/2/attribute: an effect cannot move \"gobo\"; expected intensity, pan, tilt, zoom, "
-            "iris, frost, gobo_rotation or prism_rotation (or a circle on position)");
+            "iris, frost, gobo_rotation, prism_rotation or color (or a circle on position)");
   EXPECT_EQ(problemAt("\"group\": \"Back\", \"rate\": 1.5", "\"group\": \"Front\", \"rate\": 1.5"),
             "/cue_lists/0/cues/0/effects/2/group: the effect names group \"Front\", which is not in /groups; expected "
             "one of: \"Back\"");
