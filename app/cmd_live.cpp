@@ -86,6 +86,9 @@ void printReport(const LiveReceiver& live, double seconds, const ControlStats& c
     std::fprintf(stderr, "haze live: synchronisation: %llu sync packets, %llu frames held for them, %llu superseded before their sync, %zu still held\n",
                  static_cast<unsigned long long>(s.syncPackets), static_cast<unsigned long long>(s.held),
                  static_cast<unsigned long long>(s.superseded), live.input().syncGate().heldCount());
+  if (s.foreignArtSyncs)
+    std::fprintf(stderr, "haze live: ignored %llu ArtSync from addresses that send no ArtDmx (Art-Net 4: ArtSync is the ArtDmx sender's)\n",
+                 static_cast<unsigned long long>(s.foreignArtSyncs));
   for (const DiscoveredSource& d : live.input().discovered()) {
     std::string list;
     int shown = 0;
@@ -327,6 +330,7 @@ int runLive(const Args& args) {
     if (Status s = writeFileAtomically(stateJson, text, false); !s) status = fail(s.error().str());
   }
   if (!renderOut.empty()) {
+    if (!livePlayback.camera().empty()) render.camera = livePlayback.camera();  // /haze/camera
     if (Status s = renderStateToFile(*show, *profiles, state, render, renderOut); !s) {
       status = fail(s.error().str());
     }
