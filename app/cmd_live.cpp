@@ -49,7 +49,7 @@ constexpr const char* kUsage =
     "--duration 0 (the default) runs until Ctrl-C.\n"
     "--movement real|instant: heads follow DMX and cues at the fixtures' speeds (default) or jump at once.\n"
     "--osc PORT: OSC remote control on --bind:PORT (/haze/go, /haze/back, /haze/cue N,\n"
-    "/haze/fixture/ID/ATTRIBUTE V, /haze/clear; docs/live.md). --timecode: ArtTimeCode fires the\n"
+    "/haze/fixture/ID/ATTRIBUTE V, /haze/clear, /haze/camera NAME; docs/live.md). --timecode: ArtTimeCode fires the\n"
     "cues that have a \"timecode\". Both play --cue-list (default: the first list); fixtures on a\n"
     "universe with DMX follow the console. --record-cue N: on exit, the commanded stage (where the\n"
     "heads are going, not where they are) is recorded into cue N (tracking: only what differs) and\n"
