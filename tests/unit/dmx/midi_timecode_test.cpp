@@ -5,6 +5,7 @@
 // at each minute but every tenth.
 #include <gtest/gtest.h>
 
+#include <random>
 #include <vector>
 
 #include "shows/dmx/midi_timecode.h"
@@ -109,6 +110,27 @@ TEST(MidiTimecode, DropFrameSkipsFramesZeroAndOne) {
   ASSERT_EQ(r.size(), 1u);
   EXPECT_EQ(r[0].time, (Timecode{0, 1, 0, 2}));
   EXPECT_NEAR(r[0].fps(), 29.97, 0.001);
+}
+
+// Random bytes (mostly quarter frames, some sysex starts) never give a time out of range.
+TEST(MidiTimecode, RandomBytesGiveOnlyValidTimes) {
+  std::mt19937 rng(16);
+  MtcDecoder d;
+  for (int round = 0; round < 2000; ++round) {
+    Bytes b;
+    for (int i = 0; i < 64; ++i) {
+      const int kind = static_cast<int>(rng() % 8);
+      b.push_back(kind < 5 ? 0xF1 : kind == 5 ? 0xF0 : static_cast<uint8_t>(rng()));
+      b.push_back(static_cast<uint8_t>(rng() & (kind < 6 ? 0x7F : 0xFF)));
+    }
+    for (const MtcReading& r : d.feed(b)) {
+      EXPECT_LE(r.time.hours, 23);
+      EXPECT_LE(r.time.minutes, 59);
+      EXPECT_LE(r.time.seconds, 59);
+      EXPECT_LT(r.time.frames, r.rateCode == 0 ? 24 : r.rateCode == 1 ? 25 : 30);
+    }
+  }
+  EXPECT_GT(d.stats().quarterFrames, 0u);
 }
 
 }  // namespace
