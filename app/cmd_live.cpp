@@ -1,7 +1,7 @@
 // haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S] [--state-json OUT]
-//                [--render OUT.png] [--osc PORT] [--timecode] [--record-cue N]: DMX in from a
+//                [--render OUT.png] [--osc PORT] [--timecode] [--mtc] [--record-cue N]: DMX in from a
 // console, headless, optionally with haze's own cue list remote-controlled over OSC or fired by
-// ArtTimeCode. Receives for S seconds (or until SIGINT/SIGTERM), then writes the fixtures' final
+// ArtTimeCode or MIDI Time Code. Receives for S seconds (or until SIGINT/SIGTERM), then writes the fixtures' final
 // states, renders them and/or records them into a cue, and prints what arrived (good packets,
 // drops by reason, rate, sources) to stderr.
 #include <algorithm>
@@ -21,6 +21,8 @@
 #include "app/live_record.h"
 #include "app/state_json.h"
 #include "shows/dmx/live_playback.h"
+#include "shows/dmx/midi_input.h"
+#include "shows/dmx/midi_timecode.h"
 #include "shows/dmx/osc_command.h"
 #include "shows/dmx/udp_receiver.h"
 #include "shows/movement.h"
@@ -38,7 +40,7 @@ constexpr const char* kUsage =
     "                 [--artnet-port P] [--sacn-port P] [--multicast] [--on-loss hold|blackout]\n"
     "                 [--no-preview] [--camera NAME] [--width W --height H] [--quality Q]\n"
     "                 [--exposure EV] [--exposure-mode auto|manual]\n"
-    "                 [--osc PORT] [--timecode] [--cue-list NAME]\n"
+    "                 [--osc PORT] [--timecode] [--mtc [--mtc-from CLIENT:PORT]] [--cue-list NAME]\n"
     "                 [--record-cue N [--label L]] [--no-sync]\n"
     "Listens for Art-Net (UDP 6454) and sACN E1.31 (UDP 5568); neither flag means both.\n"
     "--bind: the local IPv4 address to listen on (default 127.0.0.1: this machine only).\n"
@@ -49,8 +51,9 @@ constexpr const char* kUsage =
     "--duration 0 (the default) runs until Ctrl-C.\n"
     "--movement real|instant: heads follow DMX and cues at the fixtures' speeds (default) or jump at once.\n"
     "--osc PORT: OSC remote control on --bind:PORT (/haze/go, /haze/back, /haze/cue N,\n"
-    "/haze/fixture/ID/ATTRIBUTE V, /haze/clear; docs/live.md). --timecode: ArtTimeCode fires the\n"
-    "cues that have a \"timecode\". Both play --cue-list (default: the first list); fixtures on a\n"
+    "/haze/fixture/ID/ATTRIBUTE V, /haze/clear, /haze/camera NAME; docs/live.md). --timecode: ArtTimeCode fires the\n"
+    "cues that have a \"timecode\"; --mtc: MIDI Time Code from the ALSA sequencer does (port \"haze\",\n"
+    "or --mtc-from connects to a sender). They play --cue-list (default: the first list); fixtures on a\n"
     "universe with DMX follow the console. --record-cue N: on exit, the commanded stage (where the\n"
     "heads are going, not where they are) is recorded into cue N (tracking: only what differs) and\n"
     "the show saved safely.\n";
@@ -86,6 +89,9 @@ void printReport(const LiveReceiver& live, double seconds, const ControlStats& c
     std::fprintf(stderr, "haze live: synchronisation: %llu sync packets, %llu frames held for them, %llu superseded before their sync, %zu still held\n",
                  static_cast<unsigned long long>(s.syncPackets), static_cast<unsigned long long>(s.held),
                  static_cast<unsigned long long>(s.superseded), live.input().syncGate().heldCount());
+  if (s.foreignArtSyncs)
+    std::fprintf(stderr, "haze live: ignored %llu ArtSync from addresses that send no ArtDmx (Art-Net 4: ArtSync is the ArtDmx sender's)\n",
+                 static_cast<unsigned long long>(s.foreignArtSyncs));
   for (const DiscoveredSource& d : live.input().discovered()) {
     std::string list;
     int shown = 0;
@@ -137,7 +143,8 @@ int runLive(const Args& args) {
   bool artNet = false, sacn = false;
   double duration = 0.0;
   int artNetPort = options.udp.artNetPort, sacnPort = options.udp.sacnPort;
-  bool noPreview = false, timecode = false, noSync = false;
+  bool noPreview = false, timecode = false, noSync = false, mtc = false;
+  std::string mtcFrom;
   int oscPort = -1;
   std::string cueListName, recordCue, recordLabel;
   CommandLine cli("haze live", kUsage);
@@ -161,6 +168,8 @@ int runLive(const Args& args) {
       .choice("--exposure-mode", exposureMode, {"auto", "manual"})
       .integer("--osc", oscPort, 0, 65535, "a port 0..65535")
       .flag("--timecode", timecode)
+      .flag("--mtc", mtc)
+      .text("--mtc-from", mtcFrom, "an ALSA sequencer address (CLIENT:PORT)")
       .text("--cue-list", cueListName, "a cue list name")
       .text("--record-cue", recordCue, "a cue number such as 10")
       .text("--label", recordLabel, "a cue label")
@@ -201,9 +210,10 @@ int runLive(const Args& args) {
       break;
     }
   if (!cueListName.empty() && !cueList) return fail(showPath + ": the show has no cue list \"" + cueListName + "\"");
-  const bool playback = oscPort >= 0 || timecode;
+  if (!mtcFrom.empty()) mtc = true;
+  const bool playback = oscPort >= 0 || timecode || mtc;
   LivePlayback livePlayback(*show, *profiles, cueList);
-  if (timecode && cueList &&
+  if ((timecode || mtc) && cueList &&
       std::none_of(cueList->cues.begin(), cueList->cues.end(), [](const Cue& c) { return !c.timecode.empty(); }))
     std::fprintf(stderr, "haze live: --timecode: no cue of the played list has a \"timecode\"; nothing will fire\n");
 
@@ -237,6 +247,15 @@ int runLive(const Args& args) {
   if (receiver.udp().sacnPort()) {
     std::fprintf(stderr, "haze live: sACN on %s:%d\n", options.udp.bindAddress.c_str(),
                  receiver.udp().sacnPort());
+  }
+  std::unique_ptr<MidiSeqInput> mtcIn;
+  MtcDecoder mtcDecoder;
+  if (mtc) {
+    auto m = MidiSeqInput::open(mtcFrom);
+    if (!m) return fail("--mtc: " + m.error().str());
+    mtcIn = std::move(*m);
+    std::fprintf(stderr, "haze live: MTC on %s (ALSA sequencer client \"haze\", port \"MTC in\"%s)\n",
+                 mtcIn->address().c_str(), mtcFrom.empty() ? "" : ("; connected from " + mtcFrom).c_str());
   }
   std::unique_ptr<OscSocket> osc;
   if (oscPort >= 0) {
@@ -292,6 +311,16 @@ int runLive(const Args& args) {
     const double passStart = LiveReceiver::nowS();
     receiver.poll(waitMs);
     if (osc) osc->pump(handleOsc);
+    if (mtcIn) {
+      mtcIn->pump([&](std::span<const uint8_t> bytes) {
+        for (const MtcReading& r : mtcDecoder.feed(bytes)) {
+          const std::string what = livePlayback.timecode(r.time, r.fps(), LiveReceiver::nowS());
+          if (what.empty()) continue;
+          ++control.timecodeFired;
+          std::fprintf(stderr, "haze live: MTC %s: %s\n", r.time.str().c_str(), what.c_str());
+        }
+      });
+    }
     if (timecode) {
       for (const ArtTimeCodePacket& tc : receiver.input().takeTimecodes()) {
         const std::string what = livePlayback.timecode(tc.time, tc.fps(), LiveReceiver::nowS());
@@ -320,6 +349,12 @@ int runLive(const Args& args) {
   sigaction(SIGINT, &oldInt, nullptr);
   sigaction(SIGTERM, &oldTerm, nullptr);
   printReport(receiver, LiveReceiver::nowS() - start, control, osc != nullptr, timecode);
+  if (mtcIn) {
+    const MtcStats& m = mtcDecoder.stats();
+    std::fprintf(stderr, "haze live: MTC: %llu quarter frames, %llu full frames, %llu broken cycles, %llu bad times\n",
+                 static_cast<unsigned long long>(m.quarterFrames), static_cast<unsigned long long>(m.fullFrames),
+                 static_cast<unsigned long long>(m.brokenCycles), static_cast<unsigned long long>(m.badTimes));
+  }
 
   int status = 0;
   if (!stateJson.empty()) {
@@ -327,6 +362,7 @@ int runLive(const Args& args) {
     if (Status s = writeFileAtomically(stateJson, text, false); !s) status = fail(s.error().str());
   }
   if (!renderOut.empty()) {
+    if (!livePlayback.camera().empty()) render.camera = livePlayback.camera();  // /haze/camera
     if (Status s = renderStateToFile(*show, *profiles, state, render, renderOut); !s) {
       status = fail(s.error().str());
     }

@@ -1,8 +1,9 @@
-// haze render SHOW [--cue N | --all-cues] [--at S] [--list NAME] [--camera NAME]
+// haze render SHOW [--cue N | --all-cues | --timecode hh:mm:ss:ff] [--at S] [--list NAME] [--camera NAME]
 //                  [--width W --height H] [--quality Q] [--exposure EV] [--exposure-mode auto|manual]
 //                  [--bloom F] [--exr-pixel half|float] -o OUT.(png|pfm|exr) | DIR/
 // haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--from CUE] [--to CUE] [--fps N]
-//                  [--hold S] [--duration S] [--codec NAME] [--progress] (docs/output.md)
+//                  [--hold S] [--duration S] [--codec NAME] [--progress] [--timecode START] (docs/output.md)
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,18 +17,20 @@
 #include "app/render_video.h"
 #include "shows/playback.h"
 #include "shows/show.h"
+#include "shows/dmx/live_playback.h"
+#include "shows/timecode.h"
 
 namespace haze {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: haze render SHOW [--cue N | --all-cues] [--at S] [--list NAME] [--camera NAME]\n"
+    "usage: haze render SHOW [--cue N | --all-cues | --timecode hh:mm:ss:ff] [--at S] [--list NAME] [--camera NAME]\n"
     "                   [--width W --height H] [--quality draft|default|high|reference] [--exposure EV]\n"
     "                   [--exposure-mode auto|manual] [--bloom F] [--exr-pixel half|float]\n"
     "                   -o OUT.png|OUT.pfm|OUT.exr (one image) | -o DIR/ (with --all-cues)\n"
     "       haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--list NAME] [--from CUE] [--to CUE]\n"
     "                   [--fps N] [--hold S] [--duration S] [--codec NAME] [--caption] [--progress]\n"
-    "                   [--timeline FILE.json] (and the options above)\n"
+    "                   [--timeline FILE.json | --timecode hh:mm:ss:ff] (and the options above)\n"
     "Without --cue the first cue is rendered; --at S renders S seconds after its GO.\n"
     "PNGs are metered like a camera (auto, the default) and --exposure EV is an offset from the\n"
     "metered exposure; with --exposure-mode manual it is absolute (EV 0: 50 cd/m^2 maps to 1).\n"
@@ -41,6 +44,10 @@ constexpr const char* kUsage =
     "--fps N (default 25); a name with %05d writes one PNG or EXR per frame instead. --caption burns\n"
     "the cue number, label and time into video and PNG frames (never into EXRs). --timeline FILE.json\n"
     "gives the GO times: {\"go\": [{\"cue\": \"1\", \"at\": 0}, {\"cue\": \"2\", \"at\": 8.5}], \"end\": 20}.\n"
+    "--timecode T renders what the list's timecoded cues give at T, as `haze live --timecode` shows\n"
+    "on a jump to T (the last cue at or before T, its fade finished; the defaults before the first);\n"
+    "with --video, timecode runs from T and cues fire at their times with their fades.\n"
+    "--timecode-rate 24|25|30 (default 25): the frames of a timecode per second.\n"
     "--progress reports progress on stderr even when it is not a terminal (it always is on one).\n"
     "--movement real|instant: pan, tilt and zoom at the fixtures' speeds (default) or at once (--at, --video).\n"
     "--cells separate|merged: one beam per cell (default), or a fixture's alike cells as one beam.\n"
@@ -60,7 +67,7 @@ int runRender(const Args& args) {
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
   bool allCues = false, progress = false, caption = false, noBodies = false;
-  std::string video, from, to, codec = "libx264", timelineFile;
+  std::string video, from, to, codec = "libx264", timelineFile, timecodeText, timecodeRate = "25";
   double hold = 2.0, duration = 0.0;
   int fps = 25;
   CommandLine cli("haze render", kUsage);
@@ -90,6 +97,8 @@ int runRender(const Args& args) {
       .flag("--caption", caption)
       .flag("--no-bodies", noBodies)
       .text("--timeline", timelineFile, "a JSON file of GO times")
+      .text("--timecode", timecodeText, "a timecode hh:mm:ss:ff")
+      .choice("--timecode-rate", timecodeRate, {"24", "25", "30"})
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
   const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
@@ -100,6 +109,17 @@ int runRender(const Args& args) {
   if (out.empty() && video.empty())
     return fail("no output given: -o OUT.png|OUT.pfm|OUT.exr, -o DIR/ with --all-cues, or --video OUT.mp4");
   if (allCues && !cue.empty()) return fail("--cue and --all-cues exclude each other");
+  std::optional<Timecode> timecode;
+  const int rate = std::stoi(timecodeRate);
+  if (!timecodeText.empty()) {
+    timecode = parseTimecode(timecodeText);
+    if (!timecode || timecode->frames >= rate)
+      return fail("--timecode: expected hh:mm:ss:ff within a day, frames below " + timecodeRate + ", got '" +
+                  timecodeText + "'");
+    if (allCues || !cue.empty() || at >= 0) return fail("--timecode chooses the moment itself: no --cue, --all-cues or --at");
+    if (!from.empty() || !to.empty() || !timelineFile.empty())
+      return fail("--timecode plays the cues at their timecodes: no --from, --to or --timeline with it");
+  }
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
 
@@ -110,6 +130,8 @@ int runRender(const Args& args) {
   const CueList* cueList = show->findCueList(list);
   if (!cueList) return fail(showPath + ": no cue list" + (list.empty() ? "" : " named '" + list + "'"));
   if (cueList->cues.empty()) return fail(showPath + ": cue list '" + cueList->name + "' has no cues");
+  if (timecode && std::none_of(cueList->cues.begin(), cueList->cues.end(), [](const Cue& c) { return !c.timecode.empty(); }))
+    return fail(showPath + ": cue list '" + cueList->name + "' has no cue with a timecode");
 
   RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
                            .quality = *q, .exposureMode = parseExposureMode(exposureMode),
@@ -122,7 +144,7 @@ int runRender(const Args& args) {
   if (!video.empty()) {
     VideoJob job{.list = cueList, .from = 0, .to = cueList->cues.size() - 1, .holdS = hold, .durationS = duration,
                  .fps = fps, .codec = codec, .out = video, .progress = progress, .caption = caption,
-                 .realMovement = movement == "real"};
+                 .realMovement = movement == "real", .timecodeStart = timecode, .timecodeRate = rate};
     for (auto [number, index] : {std::pair{&from, &job.from}, std::pair{&to, &job.to}}) {
       if (number->empty()) continue;
       auto found = findCue(*cueList, *number);
@@ -159,6 +181,21 @@ int runRender(const Args& args) {
     }
     return true;
   };
+
+  if (timecode) {
+    // One copy of the firing rule: a still is the first reading of a timecode, which chases.
+    LivePlayback playback(*show, *profiles, cueList);
+    playback.timecode(*timecode, rate, 0.0);
+    const StageState state = playback.stage(0.0, {}, {});
+    const auto current = playback.currentCue();
+    const std::string where = current ? "cue " + cueList->cues[*current].number : "before the first timed cue";
+    std::fprintf(stderr, "haze render: timecode %s: %s\n", timecode->str().c_str(), where.c_str());
+    const std::string comment = "haze render of " + showPath + ", cue list " + cueList->name + ", timecode " +
+                                timecode->str() + " (" + where + ")";
+    const Status s = (*session)->renderToFile(*show, *profiles, state, out, comment, 0.0);
+    if (!s) return fail(s.error().str());
+    return 0;
+  }
 
   if (allCues) {
     const std::filesystem::path dir(out);

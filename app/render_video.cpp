@@ -17,6 +17,7 @@
 #include "renderer/scene/image.h"
 #include "shows/cue_player.h"
 #include "shows/cue_timeline.h"
+#include "shows/dmx/live_playback.h"
 #include "shows/movement.h"
 
 namespace haze {
@@ -109,7 +110,18 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
   const CueList& list = *job.list;
   const CueTimeline timeline = job.timeline ? *job.timeline : playCueRange(show, list, job.from, job.to, job.holdS);
   const size_t firstCue = timeline.gos.empty() ? job.from : timeline.gos.front().cueIndex;
-  const double endS = job.durationS > 0 ? job.durationS : timeline.endS;
+  std::optional<LivePlayback> live;
+  long startFrame = 0;
+  double lastTimedEndS = 0.0;  // seconds after the start
+  if (job.timecodeStart) {
+    live.emplace(show, profiles, &list);
+    startFrame = job.timecodeStart->toFrames(job.timecodeRate);
+    for (const Cue& c : list.cues)
+      if (auto t = parseTimecode(c.timecode))
+        lastTimedEndS = std::max(lastTimedEndS, static_cast<double>(t->toFrames(job.timecodeRate) - startFrame) /
+                                                        job.timecodeRate + cueDurationS(show, c));
+  }
+  const double endS = job.durationS > 0 ? job.durationS : live ? lastTimedEndS + job.holdS : timeline.endS;
   const int frames = std::max(1, static_cast<int>(std::ceil(endS * job.fps - 1e-9)));
   const RenderJobOptions& options = session.options();
 
@@ -144,11 +156,26 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
                        (sequence ? " (the frames before it are written)" : "; no video written")};
     }
     const double t = static_cast<double>(f) / job.fps;
-    for (; nextGo < timeline.gos.size() && timeline.gos[nextGo].atS <= t; ++nextGo)
-      if (!timeline.gos[nextGo].byFollow) player.gotoCue(timeline.gos[nextGo].cueIndex, timeline.gos[nextGo].atS);
+    StageState state;
+    if (live) {
+      const long count = startFrame + static_cast<long>(std::floor(t * job.timecodeRate + 1e-9));
+      const auto label = Timecode::fromFrames(count, job.timecodeRate);
+      if (!label) {
+        progress.finish();
+        return Error{job.out.string(), "", "timecode passes 24:00:00:00 at frame " + std::to_string(f) +
+                                               "; use a shorter --duration"};
+      }
+      if (const std::string fired = live->timecode(*label, job.timecodeRate, t); !fired.empty())
+        std::fprintf(stderr, "haze render: timecode %s: %s\n", label->str().c_str(), fired.c_str());
+      state = live->stage(t, {}, {});
+    } else {
+      for (; nextGo < timeline.gos.size() && timeline.gos[nextGo].atS <= t; ++nextGo)
+        if (!timeline.gos[nextGo].byFollow) player.gotoCue(timeline.gos[nextGo].cueIndex, timeline.gos[nextGo].atS);
+      state = player.state(t);
+    }
+    const auto current = live ? live->currentCue() : player.currentCue();
     // Frames of a hold (or of a delay) show an unchanged stage: the frame state is built from
     // the stage state alone, so the last picture is that frame exactly and is not drawn again.
-    StageState state = player.state(t);
     if (job.realMovement) {
       if (f == 0) heads.reset(state, t);
       state = heads.advance(state, t, true);
@@ -167,7 +194,6 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
     if (!exr && job.caption) {
       shown = rgb;
       char text[256];
-      const auto current = player.currentCue();
       const Cue& cue = list.cues[current.value_or(job.from)];
       std::snprintf(text, sizeof text, "cue %s%s%s   %.2f s", cue.number.c_str(), cue.label.empty() ? "" : "  ",
                     cue.label.c_str(), t);
@@ -175,7 +201,7 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
     }
     const std::vector<unsigned char>& frame = job.caption ? shown : rgb;
     if (exr) {
-      const Cue& cue = list.cues[player.currentCue().value_or(job.from)];
+      const Cue& cue = list.cues[current.value_or(job.from)];
       char comment[256];
       std::snprintf(comment, sizeof comment, "haze render --video of %s, cue list %s, frame %d at %.3f s, cue %s",
                     show.file.filename().string().c_str(), list.name.c_str(), f, t, cue.number.c_str());

@@ -10,6 +10,7 @@
 #include "app/render_session.h"
 #include "shows/cue_timeline.h"
 #include "shows/show.h"
+#include "shows/timecode.h"
 
 namespace haze {
 
@@ -27,6 +28,12 @@ struct VideoJob {
   std::optional<CueTimeline> timeline;
   // Heads travel at the fixtures' speeds (docs/movement.md); false: --movement instant.
   bool realMovement = true;
+  // --timecode START: timecode runs from START at timecodeRate frames per second and the list's
+  // timecoded cues fire as `haze live --timecode` fires them (shows/dmx/live_playback.h); the
+  // range and timeline are not used. The video ends holdS after the last timed cue's delay and
+  // fade (or at durationS).
+  std::optional<Timecode> timecodeStart;
+  int timecodeRate = 25;
 };
 
 // {"go": [{"cue": "1", "at": 0}, {"cue": "2", "at": 8.5}, ...], "end": 30}: GO presses at

@@ -10,6 +10,13 @@ std::string Timecode::str() const {
   return s;
 }
 
+std::optional<Timecode> Timecode::fromFrames(long count, int fps) {
+  if (count < 0 || fps <= 0 || count >= 86400L * fps) return std::nullopt;
+  const long s = count / fps;
+  return Timecode{static_cast<int>(s / 3600), static_cast<int>(s / 60 % 60), static_cast<int>(s % 60),
+                  static_cast<int>(count % fps)};
+}
+
 std::optional<Timecode> parseTimecode(std::string_view t) {
   if (t.size() != 11) return std::nullopt;
   int v[4];

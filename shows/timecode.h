@@ -14,6 +14,10 @@ struct Timecode {
   auto operator<=>(const Timecode&) const = default;
   std::string str() const;  // "01:02:03:04"
   double toSeconds(double fps) const { return hours * 3600.0 + minutes * 60.0 + seconds + frames / fps; }
+  // Whole frames since 00:00:00:00 at an integer rate (24, 25, 30: no drop-frame numbering).
+  long toFrames(int fps) const { return (hours * 3600L + minutes * 60L + seconds) * fps + frames; }
+  // The label of frame `count` at an integer rate; empty at or beyond 24 h.
+  static std::optional<Timecode> fromFrames(long count, int fps);
 };
 
 // "hh:mm:ss:ff" (two digits each; ';' before the frames, the drop-frame spelling, is accepted)

@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libglm-dev nlohmann-json3-dev libstb-dev libtinygltf-dev libpugixml-dev libzip-dev
   libglfw3-dev libimgui-dev libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
-  libgtest-dev libassimp-dev liblo-dev liblo-tools
+  libgtest-dev libassimp-dev liblo-dev liblo-tools ola iproute2 libasound2-dev alsa-utils
   libopenexr-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libcairo2-dev
   xvfb xdotool x11-utils imagemagick ffmpeg poppler-utils
 )

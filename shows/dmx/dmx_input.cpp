@@ -179,7 +179,13 @@ void DmxInput::receive(DmxProtocol protocol, std::span<const uint8_t> datagram,
   if (protocol == DmxProtocol::ArtNet) {
     if (isArtSync(datagram)) {
       ++stats_.syncPackets;
-      if (options_.synchronise) release(sync_.sync({DmxProtocol::ArtNet, 0}, nowS), nowS);
+      if (!options_.synchronise) return;
+      // Art-Net 4: an ArtSync counts only for the controller sending the ArtDmx (same IP).
+      if (!merger_.hasArtNetSender(senderIpv4)) {
+        ++stats_.foreignArtSyncs;
+        return;
+      }
+      release(sync_.sync({DmxProtocol::ArtNet, 0, senderIpv4}, nowS), nowS);
       return;
     }
     if (const ArtTimeCodeParse tc = parseArtTimeCode(datagram); tc.status != ArtTimeCodeStatus::NotTimeCode) {
@@ -213,7 +219,7 @@ void DmxInput::receive(DmxProtocol protocol, std::span<const uint8_t> datagram,
     if (p.packet.sequence != 0) frame.sequence = p.packet.sequence;
     frame.slots = std::span<const uint8_t>(p.packet.slots.data(),
                                            static_cast<size_t>(p.packet.length));
-    offer({DmxProtocol::ArtNet, 0}, frame, false, nowS);
+    offer({DmxProtocol::ArtNet, 0, senderIpv4}, frame, false, nowS);
     return;
   }
   const SacnParse p = parseSacn(datagram);

@@ -43,6 +43,7 @@ struct DmxInputStats {
   uint64_t unwatched = 0;    // levels for a universe no fixture is patched on
   uint64_t exceeded = 0;     // sources beyond the merger's (or the sync holder's) limits
   uint64_t syncPackets = 0;  // ArtSync and E1.31 synchronization packets
+  uint64_t foreignArtSyncs = 0;  // of syncPackets: ArtSync from an address that sends no ArtDmx
   // Every datagram ends in exactly one of the counts above and below, except held frames: `held`
   // counts them as they are held, and each is counted again when its sync releases it (good,
   // late...) or as superseded; SyncGate::heldCount() are those still waiting.

@@ -195,3 +195,16 @@ std::vector<DmxSourceInfo> DmxMerger::sources() const {
 }
 
 }  // namespace haze
+
+namespace haze {
+
+bool DmxMerger::hasArtNetSender(uint32_t ipv4) const {
+  const DmxSourceId probe = DmxSourceId::artNet(ipv4, 0);
+  for (const auto& [number, u] : universes_)
+    for (const auto& [id, source] : u.sources)
+      if (id.protocol == DmxProtocol::ArtNet && std::equal(id.bytes.begin(), id.bytes.begin() + 4, probe.bytes.begin()))
+        return true;
+  return false;
+}
+
+}  // namespace haze

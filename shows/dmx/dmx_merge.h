@@ -95,6 +95,8 @@ class DmxMerger {
   bool blackedOut(int universe) const;
   std::vector<int> activeUniverses() const;
   std::vector<DmxSourceInfo> sources() const;
+  // Whether a live Art-Net source (any port) has this IPv4 address (host order).
+  bool hasArtNetSender(uint32_t ipv4) const;
   // Bumped whenever any merged buffer may have changed: cheap "redecode?" test for pollers.
   uint64_t generation() const { return generation_; }
 

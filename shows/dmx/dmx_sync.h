@@ -5,8 +5,9 @@
 //     held until a Synchronization Packet for S; without one for E131_NETWORK_DATA_LOSS_TIMEOUT
 //     (2.5 s) the data is applied as it arrives again, unless its Force_Synchronization option
 //     is set (then it stays held until synchronisation resumes).
-//   Art-Net 4 (ArtSync): once an ArtSync has been seen, every ArtDmx are held until the next one;
-//     after 4 s without ArtSync, ArtDmx is applied as it arrives again.
+//   Art-Net 4 (ArtSync): one group per controller IP address. Once an ArtSync has come from an
+//     address, the ArtDmx from that address are held until its next ArtSync; after 4 s without
+//     one, they are applied as they arrive again. An ArtSync never releases another address's.
 // Only the newest frame per source, universe and kind (levels, per-slot priority) is kept: that
 // is what the merge would end with. Bounded: at most maxHeld frames; time is passed in.
 // Groups beyond maxGroups are not tracked (their frames are Full: counted, not merged).
@@ -25,7 +26,8 @@ namespace haze {
 
 struct SyncGroup {
   DmxProtocol protocol = DmxProtocol::Sacn;
-  int address = 0;  // sACN synchronization universe; 0 for Art-Net's one group
+  int address = 0;  // sACN synchronization universe; 0 for Art-Net
+  uint32_t sender = 0;  // Art-Net: the controller's IPv4 address (host order); 0 for sACN
   auto operator<=>(const SyncGroup&) const = default;
 };
 

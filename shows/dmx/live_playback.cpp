@@ -36,6 +36,16 @@ Result<std::string> LivePlayback::apply(const OscCommand& c, double nowS) {
     else merge(programmer_[c.fixture], c.values);
     return std::string("fixture ") + std::to_string(c.fixture);
   }
+  if (c.kind == K::Camera) {
+    if (std::none_of(show_.cameras.begin(), show_.cameras.end(), [&](const CameraDef& cam) { return cam.name == c.camera; })) {
+      std::string names;
+      for (const CameraDef& cam : show_.cameras) names += (names.empty() ? "" : ", ") + ("\"" + cam.name + "\"");
+      return Error{"", "camera \"" + c.camera + "\"",
+                   "the show has no camera with this name" + (names.empty() ? std::string(" (it has none)") : "; it has " + names)};
+    }
+    camera_ = c.camera;
+    return "camera \"" + camera_ + "\"";
+  }
   if (c.kind == K::ClearAll) {
     programmer_.clear();
     return std::string("programmer cleared");

@@ -40,6 +40,8 @@ class LivePlayback {
 
   std::optional<size_t> currentCue() const { return player_ ? player_->currentCue() : std::nullopt; }
   const std::map<int, CueValues>& programmer() const { return programmer_; }
+  // The camera /haze/camera chose ("" until then: the command line's).
+  const std::string& camera() const { return camera_; }
 
  private:
   std::string chase(const Timecode& time, double nowS);
@@ -49,6 +51,7 @@ class LivePlayback {
   const CueList* list_;
   std::unique_ptr<CuePlayer> player_;
   std::map<int, CueValues> programmer_;
+  std::string camera_;
   std::vector<std::pair<Timecode, size_t>> timed_;  // the list's timed cues, in list order
   std::optional<Timecode> lastTime_;
   double lastSeconds_ = 0.0;

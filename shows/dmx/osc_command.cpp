@@ -88,6 +88,13 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
     r.ok = true;
     return r;
   }
+  if (parts.size() == 2 && verb == "camera") {
+    if (argc != 1 || (t[0] != 's' && t[0] != 'S')) return fail(r.address + " takes one argument, a camera name (a string)");
+    r.command.kind = OscCommand::Kind::Camera;
+    r.command.camera = text(argv[0]);
+    r.ok = true;
+    return r;
+  }
   if (parts.size() == 2 && (verb == "cue" || verb == "goto")) {
     if (argc != 1) return fail(r.address + " takes one argument, the cue number");
     std::string cue;

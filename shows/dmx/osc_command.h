@@ -7,6 +7,7 @@
 //                                         intensity 0..1, pan, tilt, zoom, gobo_rotation (degrees),
 //                                         iris 0..1, color R G B (0..1 each), gobo NAME
 //   /haze/fixture/ID/clear, /haze/clear   take one fixture or every fixture out of the programmer
+//   /haze/camera NAME                     view the stage through the show's camera NAME
 // Pure bytes in: no sockets, never throws; bundles are refused (one message per datagram).
 #pragma once
 
@@ -20,9 +21,10 @@
 namespace haze {
 
 struct OscCommand {
-  enum class Kind { Go, Back, Goto, SetFixture, ClearFixture, ClearAll };
+  enum class Kind { Go, Back, Goto, SetFixture, ClearFixture, ClearAll, Camera };
   Kind kind = Kind::Go;
   std::string cue;      // Goto
+  std::string camera;   // Camera: the camera's name
   int fixture = 0;      // SetFixture, ClearFixture
   CueValues values;     // SetFixture: one attribute set
 };

@@ -70,4 +70,35 @@ grep -q 'haze live: OSC: 7 commands done, 3 refused' "$HAZE_ERR" || fail "the OS
 # the programmer's: 0.5, green with a little blue.
 expect_state "$TMP/state.json" '{"1": {"intensity": 0.6, "pan": 90}, "2": {"intensity": 0.5, "color": [0, 1, 0.25]},
   "3": {"intensity": 1, "color": [1, 0, 0]}}' 1e-6 || fail "fixture states differ from the cues and the programmer"
+
+# /haze/camera: the live render is seen through the show's camera the message names, the same
+# picture as `haze render --cue 3 --camera Side`; an unknown name is refused with /haze/error.
+live_start OSC "$ROOT/tests/data/live/cues.haze.json" --sacn --sacn-port 0 --osc 0 --movement instant \
+  --width 64 --height 36 --quality draft --render "$TMP/live.pfm"
+send 'OSC /haze/cue from .*: cue 3$' /haze/cue s 3
+send 'OSC /haze/camera from .*: camera "Side"$' /haze/camera s Side
+python3 - "$PORT" <<'PY' || fail "the /haze/camera replies were not as expected"
+import socket, sys
+port = int(sys.argv[1])
+def s(x):
+    b = x.encode() + b'\0'
+    return b + b'\0' * (-len(b) % 4)
+sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+sock.settimeout(10)
+def ask(b):
+    sock.sendto(b, ('127.0.0.1', port))
+    return [x.decode() for x in sock.recv(2048).split(b'\0') if x]
+got = ask(s('/haze/camera') + s(',s') + s('Balcony'))
+assert got[0] == '/haze/error' and got[2] == '/haze/camera' and 'no camera' in got[3] and '"FOH", "Side"' in got[3], got
+got = ask(s('/haze/camera') + s(','))
+assert got[0] == '/haze/error' and 'camera name' in got[3], got
+PY
+live_stop_ok
+grep -q 'haze live: OSC: 2 commands done, 2 refused' "$HAZE_ERR" || fail "the OSC counts are not 2 done, 2 refused"
+"$HAZE" render "$ROOT/tests/data/live/cues.haze.json" --cue 3 --camera Side --width 64 --height 36 --quality draft \
+  -o "$TMP/side.pfm" || fail "haze render --camera Side failed"
+"$HAZE" render "$ROOT/tests/data/live/cues.haze.json" --cue 3 --width 64 --height 36 --quality draft \
+  -o "$TMP/foh.pfm" || fail "haze render (FOH) failed"
+cmp -s "$TMP/live.pfm" "$TMP/side.pfm" || fail "the live render after /haze/camera Side is not the Side camera's picture"
+cmp -s "$TMP/live.pfm" "$TMP/foh.pfm" && fail "the Side and FOH cameras give the same picture"
 echo "PASS live_osc"

@@ -33,6 +33,7 @@ bool acceptSacn(const uint8_t* data, size_t size);
 bool acceptSacnExtended(const uint8_t* data, size_t size);
 bool acceptArtTimeCode(const uint8_t* data, size_t size);
 bool acceptOsc(const uint8_t* data, size_t size);
+bool acceptMidiTimecode(const uint8_t* data, size_t size);
 
 }  // namespace haze::fuzz
 

@@ -289,3 +289,13 @@ put('osc', 'ok-gobo.bin', osc('/haze/fixture/1/gobo', 'Stars'))
 put('osc', 'bad-intensity-range.bin', osc('/haze/fixture/1/intensity', 2.0))
 put('osc', 'bad-truncated.bin', osc('/haze/fixture/1/pan', 10.0)[:-2])
 put('osc', 'bad-bundle.bin', b'#bundle\0' + b'\0' * 7 + b'\1' + struct.pack('>i', 12) + osc('/haze/go'))
+
+# MIDI Time Code (MMA MTC spec): quarter frames F1 0n spelling 01:02:03:04 at 25 fps (pieces
+# 0..7: frames 4|0, seconds 3|0, minutes 2|0, hours 1, hours-high 0 with rate 1 << 1), the
+# same backwards, a Full Frame sysex; broken: a piece missing, minutes 60.
+mtc_forward = bytes([0xF1, 0x04, 0xF1, 0x10, 0xF1, 0x23, 0xF1, 0x30, 0xF1, 0x42, 0xF1, 0x50, 0xF1, 0x61, 0xF1, 0x72])
+put('midi_timecode', 'ok-quarter-frames.bin', mtc_forward)
+put('midi_timecode', 'ok-backward.bin', b''.join(mtc_forward[i:i + 2] for i in range(14, -1, -2)))
+put('midi_timecode', 'ok-full-frame.bin', bytes([0xF0, 0x7F, 0x7F, 0x01, 0x01, 0x21, 0x02, 0x03, 0x04, 0xF7]))
+put('midi_timecode', 'bad-missing-piece.bin', mtc_forward[:4] + mtc_forward[6:])
+put('midi_timecode', 'bad-minutes-60.bin', bytes([0xF0, 0x7F, 0x7F, 0x01, 0x01, 0x21, 0x3C, 0x03, 0x04, 0xF7]))

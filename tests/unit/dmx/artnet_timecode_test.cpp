@@ -48,5 +48,16 @@ TEST(Timecode, LabelsParseAndOrder) {
   EXPECT_LT(*parseTimecode("00:00:59:29"), *parseTimecode("00:01:00:00"));
 }
 
+// Frame counts at an integer rate: 01:02:03:04 at 25 fps is (3600 + 120 + 3) * 25 + 4 frames.
+TEST(Timecode, FrameCountsRoundTrip) {
+  EXPECT_EQ(parseTimecode("01:02:03:04")->toFrames(25), 3723L * 25 + 4);
+  EXPECT_EQ(Timecode::fromFrames(3723L * 25 + 4, 25), (Timecode{1, 2, 3, 4}));
+  EXPECT_EQ(Timecode::fromFrames(86400L * 30 - 1, 30), (Timecode{23, 59, 59, 29}));
+  EXPECT_FALSE(Timecode::fromFrames(86400L * 24, 24)) << "24:00:00:00 is beyond a day";
+  EXPECT_FALSE(Timecode::fromFrames(-1, 25));
+  for (long n : {0L, 1L, 23L, 24L, 1439L, 86399L * 24})
+    EXPECT_EQ(Timecode::fromFrames(n, 24)->toFrames(24), n);
+}
+
 }  // namespace
 }  // namespace haze

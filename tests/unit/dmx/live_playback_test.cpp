@@ -59,6 +59,24 @@ TEST(LivePlayback, OscGoBackGoto) {
   EXPECT_FLOAT_EQ(p.stage(0.8, {}, {}).at(102).panDeg, 0.0f);
 }
 
+TEST(LivePlayback, CameraMustBeOneOfTheShows) {
+  test::TestShow t = timedShow();
+  t.show.cameras.clear();
+  t.show.cameras.push_back(CameraDef{.name = "FOH"});
+  t.show.cameras.push_back(CameraDef{.name = "Side"});
+  LivePlayback p(t.show, t.profiles, &t.show.cueLists[0]);
+  EXPECT_EQ(p.camera(), "") << "the command line's camera until a message chooses one";
+  OscCommand c;
+  c.kind = OscCommand::Kind::Camera;
+  c.camera = "Side";
+  EXPECT_EQ(*p.apply(c, 0.0), "camera \"Side\"");
+  c.camera = "Balcony";
+  const auto refused = p.apply(c, 0.1);
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().str().find("it has \"FOH\", \"Side\""), std::string::npos) << refused.error().str();
+  EXPECT_EQ(p.camera(), "Side") << "a refused name leaves the camera as it was";
+}
+
 TEST(LivePlayback, TimecodeFiresCuesAtTheirFrameAndChasesOnJumps) {
   const test::TestShow t = timedShow();
   LivePlayback p(t.show, t.profiles, &t.show.cueLists[0]);

@@ -57,6 +57,19 @@ TEST(Osc, TransportCommands) {
   EXPECT_EQ(parseOscCommand(osc("/haze/cue", {{'f', 4}})).command.cue, "4");
 }
 
+TEST(Osc, Camera) {
+  const OscParse cam = parseOscCommand(osc("/haze/camera", {{'s', 0, "Side"}}));
+  ASSERT_TRUE(cam.ok) << cam.error;
+  EXPECT_EQ(cam.command.kind, OscCommand::Kind::Camera);
+  EXPECT_EQ(cam.command.camera, "Side");
+  for (const auto& bad : {osc("/haze/camera"), osc("/haze/camera", {{'i', 2}}),
+                          osc("/haze/camera", {{'s', 0, "a"}, {'s', 0, "b"}})}) {
+    const OscParse p = parseOscCommand(bad);
+    EXPECT_FALSE(p.ok);
+    EXPECT_NE(p.error.find("camera name"), std::string::npos) << p.error;
+  }
+}
+
 TEST(Osc, FixtureAttributes) {
   const OscParse i = parseOscCommand(osc("/haze/fixture/12/intensity", {{'f', 0.5}}));
   ASSERT_TRUE(i.ok) << i.error;

@@ -125,6 +125,49 @@ TEST(Sync, ArtSyncHoldsArtDmxUntilTheNextAndLapsesAfter4s) {
   EXPECT_EQ(input.stats().syncPackets, 2u);
 }
 
+// Art-Net 4: ArtSync belongs to the controller that sends the ArtDmx. An ArtSync from another
+// IP address neither starts holding nor releases the held frames; each controller's ArtSync
+// releases only its own.
+TEST(Sync, ArtSyncFromAnotherAddressIsIgnored) {
+  const test::TestShow t = test::makeTestShow();
+  DmxInput input(t.show, t.profiles);
+  constexpr uint32_t kConsole = 0x0A000001, kOther = 0x0A000002;
+  auto dmx = [](uint8_t subUni, uint8_t level) {
+    test::ArtDmxFields f;
+    f.subUni = subUni;
+    f.data[0] = level;
+    return test::artDmx(f);
+  };
+  input.receive(DmxProtocol::ArtNet, dmx(0, 10), kConsole, 6454, 0.0);
+  input.receive(DmxProtocol::ArtNet, test::artSync(), kOther, 6454, 0.05);
+  input.receive(DmxProtocol::ArtNet, dmx(0, 20), kConsole, 6454, 0.1);
+  EXPECT_EQ(look(input, 0.1).first, 20) << "another address's ArtSync must not make the console's ArtDmx wait";
+  EXPECT_EQ(input.stats().foreignArtSyncs, 1u);
+
+  input.receive(DmxProtocol::ArtNet, test::artSync(), kConsole, 6454, 0.2);
+  input.receive(DmxProtocol::ArtNet, dmx(0, 50), kConsole, 6454, 0.3);
+  input.receive(DmxProtocol::ArtNet, dmx(1, 50), kConsole, 6454, 0.3);
+  EXPECT_EQ(look(input, 0.3), std::make_pair(20, 0)) << "held for the console's next ArtSync";
+  input.receive(DmxProtocol::ArtNet, test::artSync(), kOther, 6454, 0.35);
+  EXPECT_EQ(look(input, 0.35), std::make_pair(20, 0)) << "another address's ArtSync released the console's frames";
+  input.receive(DmxProtocol::ArtNet, test::artSync(), kConsole, 6454, 0.4);
+  EXPECT_EQ(look(input, 0.4), std::make_pair(50, 50));
+
+  // A second controller on universe 2 with a sync of its own: each ArtSync releases its sender's.
+  input.receive(DmxProtocol::ArtNet, dmx(1, 60), kOther, 6454, 0.5);  // not synced yet: at once
+  EXPECT_EQ(look(input, 0.5).second, 60);
+  input.receive(DmxProtocol::ArtNet, test::artSync(), kOther, 6454, 0.55);
+  input.receive(DmxProtocol::ArtNet, dmx(0, 80), kConsole, 6454, 0.6);
+  input.receive(DmxProtocol::ArtNet, dmx(1, 90), kOther, 6454, 0.6);
+  EXPECT_EQ(look(input, 0.6), std::make_pair(50, 60));
+  input.receive(DmxProtocol::ArtNet, test::artSync(), kOther, 6454, 0.65);
+  EXPECT_EQ(look(input, 0.65), std::make_pair(50, 90)) << "the other controller's ArtSync releases its frame only";
+  input.receive(DmxProtocol::ArtNet, test::artSync(), kConsole, 6454, 0.7);
+  EXPECT_EQ(look(input, 0.7), std::make_pair(80, 90));
+  EXPECT_EQ(input.stats().foreignArtSyncs, 2u);
+  EXPECT_EQ(input.stats().syncPackets, 7u);
+}
+
 // Sync holding is bounded: frames beyond the holder's limit are counted, not kept.
 TEST(Sync, HolderIsBounded) {
   const test::TestShow t = test::makeTestShow();

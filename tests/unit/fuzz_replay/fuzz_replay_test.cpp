@@ -138,6 +138,7 @@ TEST(FuzzReplay, Sacn) { replay("sacn", fuzz::acceptSacn, 5000, 9); }
 TEST(FuzzReplay, SacnExtended) { replay("sacn_extended", fuzz::acceptSacnExtended, 5000, 11); }
 TEST(FuzzReplay, ArtTimeCode) { replay("artnet_timecode", fuzz::acceptArtTimeCode, 3000, 12); }
 TEST(FuzzReplay, Osc) { replay("osc", fuzz::acceptOsc, 5000, 13); }
+TEST(FuzzReplay, MidiTimecode) { replay("midi_timecode", fuzz::acceptMidiTimecode, 5000, 14); }
 
 }  // namespace
 }  // namespace haze
