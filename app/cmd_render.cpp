@@ -1,6 +1,7 @@
 // haze render SHOW [--cue N | --all-cues | --timecode hh:mm:ss:ff] [--at S] [--list NAME] [--camera NAME]
 //                  [--width W --height H] [--quality Q] [--exposure EV] [--exposure-mode auto|manual]
 //                  [--bloom F] [--exr-pixel half|float] -o OUT.(png|pfm|exr) | DIR/
+// haze render SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] ... -o OUT (app/list_plays.h)
 // haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--from CUE] [--to CUE] [--fps N]
 //                  [--hold S] [--duration S] [--codec NAME] [--progress] [--timecode START] (docs/output.md)
 #include <algorithm>
@@ -11,6 +12,7 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/list_plays.h"
 #include "app/progress.h"
 #include "app/render_session.h"
 #include "shows/movement.h"
@@ -31,7 +33,10 @@ constexpr const char* kUsage =
     "       haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--list NAME] [--from CUE] [--to CUE]\n"
     "                   [--fps N] [--hold S] [--duration S] [--codec NAME] [--caption] [--progress]\n"
     "                   [--timeline FILE.json | --timecode hh:mm:ss:ff] (and the options above)\n"
+    "       haze render SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] -o OUT (and the options above)\n"
     "Without --cue the first cue is rendered; --at S renders S seconds after its GO.\n"
+    "--play plays several cue lists at once, as haze state --play (docs/shows.md): intensity HTP,\n"
+    "the rest LTP; --at S counts from 0 (without it: every fade done).\n"
     "PNGs are metered like a camera (auto, the default) and --exposure EV is an offset from the\n"
     "metered exposure; with --exposure-mode manual it is absolute (EV 0: 50 cd/m^2 maps to 1).\n"
     "A camera's \"exposure\" in the show is used unless these are given. PFMs are never exposed.\n"
@@ -70,7 +75,15 @@ int runRender(const Args& args) {
   std::string video, from, to, codec = "libx264", timelineFile, timecodeText, timecodeRate = "25";
   double hold = 2.0, duration = 0.0;
   int fps = 25;
+  std::vector<ListPlay> plays;
+  std::string playError;
   CommandLine cli("haze render", kUsage);
+  cli.custom("--play", "LIST=CUE[@MASTER][+GO_S]", [&](const std::string& v) {
+    auto p = parseListPlay(v);
+    if (!p && playError.empty()) playError = p.error().message;
+    if (p) plays.push_back(*p);
+    return true;
+  });
   cli.text("--cue", cue, "a cue number")
       .flag("--all-cues", allCues)
       .number("--at", at, 0.0, 1e9, "seconds >= 0")
@@ -102,6 +115,10 @@ int runRender(const Args& args) {
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
   const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
+  if (!playError.empty()) return fail("--play " + playError);
+  if (!plays.empty() && (!video.empty() || allCues || !cue.empty() || !list.empty() || !timecodeText.empty()))
+    return fail("--play renders one still of the lists it names; expected no --video, --all-cues, --cue, --list or "
+                "--timecode with it");
   if (!video.empty() && (!out.empty() || allCues || !cue.empty() || at >= 0))
     return fail("--video renders a cue range (--from, --to): -o, --all-cues, --cue and --at are for stills");
   if (video.empty() && (!from.empty() || !to.empty()))
@@ -127,17 +144,28 @@ int runRender(const Args& args) {
   if (!show) return fail(show.error().str());
   auto profiles = loadProfiles(*show);
   if (!profiles) return fail(profiles.error().str());
+  RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
+                           .quality = *q, .exposureMode = parseExposureMode(exposureMode),
+                           .bloom = static_cast<float>(bloom), .mergeCells = cells == "merged", .bodies = !noBodies,
+                           .exrPixel = *parseExrPixel(exrPixel), .progress = progress};
+  if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
+  if (!plays.empty()) {
+    auto state = playListsAt(*show, *profiles, plays, at < 0 ? 1e9 : at, movement == "real");
+    if (!state) return fail(state.error().str());
+    auto session = RenderSession::open(*show, options);
+    if (!session) return fail(session.error().str());
+    const std::string comment = "haze render of " + showPath + ", cue lists " + describeListPlays(plays) +
+                                (at >= 0 ? ", " + secondsText(at) + " s after time 0" : ", their fades done");
+    const Status s = (*session)->renderToFile(*show, *profiles, *state, out, comment, at < 0 ? 0.0 : at);
+    if (!s) return fail(s.error().str());
+    return 0;
+  }
   const CueList* cueList = show->findCueList(list);
   if (!cueList) return fail(showPath + ": no cue list" + (list.empty() ? "" : " named '" + list + "'"));
   if (cueList->cues.empty()) return fail(showPath + ": cue list '" + cueList->name + "' has no cues");
   if (timecode && std::none_of(cueList->cues.begin(), cueList->cues.end(), [](const Cue& c) { return !c.timecode.empty(); }))
     return fail(showPath + ": cue list '" + cueList->name + "' has no cue with a timecode");
 
-  RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
-                           .quality = *q, .exposureMode = parseExposureMode(exposureMode),
-                           .bloom = static_cast<float>(bloom), .mergeCells = cells == "merged", .bodies = !noBodies,
-                           .exrPixel = *parseExrPixel(exrPixel), .progress = progress};
-  if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
   auto session = RenderSession::open(*show, options);
   if (!session) return fail(session.error().str());
 

@@ -1,6 +1,7 @@
 // `haze state SHOW --cue N [--at S] [--list NAME] [--follow] [--json]`: every fixture's attributes
 // S seconds after GO into cue N from the full state of the cue before it (docs/show-format.md). With
 // --follow, follows fire as they would on stage (cue N's follow may GO the next cue, and so on).
+// `--play LIST=CUE[@MASTER][+GO_S]` (repeated) plays several lists at once instead (app/list_plays.h).
 // Bad arguments or a broken show give one line on stderr and exit 1 (2 for usage).
 #include <cmath>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include "renderer/scene/venue.h"
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/list_plays.h"
 #include "app/state_json.h"
 #include "shows/cue_player.h"
 #include "shows/movement.h"
@@ -23,9 +25,14 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: haze state SHOW --cue N [--at S] [--list NAME] [--follow] [--movement real|instant] [--json]\n"
+    "       haze state SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] [--movement ...] [--json]\n"
     "  The state of every fixture S seconds after GO into cue N (default: the cue's full state).\n"
     "  --list NAME  the cue list (default: the first)\n"
     "  --follow     let follows fire after cue N, as on stage\n"
+    "  --play       several cue lists at once: LIST stands in the cue before CUE, its master at\n"
+    "               MASTER (0..1, default 1), and GOes into CUE GO_S seconds after 0 (default 0;\n"
+    "               at one time in the order given); intensity HTP, the rest LTP; follows fire;\n"
+    "               --at S counts from 0\n"
     "  --movement   real (default): pan, tilt and zoom at the fixtures' speeds; instant: at once\n"
     "  --json       {\"<fixture id>\": {\"intensity\", \"pan\", \"tilt\", \"color\", \"zoom\", \"gobo\", "
     "\"gobo_rotation\", \"iris\",\n"
@@ -38,7 +45,18 @@ int runState(const Args& args) {
   std::string file, cueNumber, listName, movement = "real";
   double atS = 1e9;  // no --at: the cue's full state
   bool json = false, follow = false;
+  std::vector<ListPlay> plays;
+  std::string playError;
   CommandLine cli("haze state", kUsage, 2);
+  cli.custom("--play", "LIST=CUE[@MASTER][+GO_S]", [&](const std::string& v) {
+    auto p = parseListPlay(v);
+    if (!p) {
+      if (playError.empty()) playError = p.error().message;
+      return true;  // reported below with the reason
+    }
+    plays.push_back(*p);
+    return true;
+  });
   cli.text("--cue", cueNumber, "a cue number")
       .number("--at", atS, 0.0, 1e9, "a time in seconds (a number, not negative)")
       .text("--list", listName, "a cue list name")
@@ -47,7 +65,10 @@ int runState(const Args& args) {
       .choice("--movement", movement, {"real", "instant"})
       .positional(file, "show");
   if (auto done = cli.parse(args)) return *done;
-  if (cueNumber.empty()) return cli.fail("expected --cue N");
+  if (!playError.empty()) return cli.fail("--play " + playError);
+  if (!plays.empty() && (!cueNumber.empty() || !listName.empty()))
+    return cli.fail("--play names its lists and cues itself; expected no --cue or --list with it");
+  if (cueNumber.empty() && plays.empty()) return cli.fail("expected --cue N (or --play LIST=CUE)");
 
   auto show = loadShow(file);
   if (!show) {
@@ -59,33 +80,41 @@ int runState(const Args& args) {
     std::cerr << profiles.error().str() << "\n";
     return 1;
   }
-  const CueList* list = show->findCueList(listName);
-  if (!list) {
-    std::cerr << file << ": " << (listName.empty() ? "the show has no cue lists" : "no cue list \"" + listName + "\"")
-              << "\n";
-    return 1;
-  }
-  auto cue = findCue(*list, cueNumber);
-  if (!cue) {
-    std::cerr << file << ": " << cue.error().message << "\n";
-    return 1;
-  }
-
   StageState state;
-  if (follow) {
-    CuePlayer player(*show, *profiles, *list);
-    if (*cue > 0) player.jumpTo(*cue - 1, 0.0);
-    player.gotoCue(*cue, 0.0);
-    if (movement == "real") {
-      state = followCommand(
-          *show, *profiles, [&](double t) { return player.state(t); },
-          [&](double t) { return !player.fading(t) && !player.nextFollowAtS(); }, atS);
-    } else {
-      state = player.state(atS);
+  if (!plays.empty()) {
+    auto played = playListsAt(*show, *profiles, plays, atS, movement == "real");
+    if (!played) {
+      std::cerr << played.error().str() << "\n";
+      return 1;
     }
+    state = std::move(*played);
   } else {
-    state = movement == "real" ? movingStateAt(*show, *profiles, *list, *cue, atS)
-                               : stateAt(*show, *profiles, *list, *cue, atS);
+    const CueList* list = show->findCueList(listName);
+    if (!list) {
+      std::cerr << file << ": " << (listName.empty() ? "the show has no cue lists" : "no cue list \"" + listName + "\"")
+                << "\n";
+      return 1;
+    }
+    auto cue = findCue(*list, cueNumber);
+    if (!cue) {
+      std::cerr << file << ": " << cue.error().message << "\n";
+      return 1;
+    }
+    if (follow) {
+      CuePlayer player(*show, *profiles, *list);
+      if (*cue > 0) player.jumpTo(*cue - 1, 0.0);
+      player.gotoCue(*cue, 0.0);
+      if (movement == "real") {
+        state = followCommand(
+            *show, *profiles, [&](double t) { return player.state(t); },
+            [&](double t) { return !player.fading(t) && !player.nextFollowAtS(); }, atS);
+      } else {
+        state = player.state(atS);
+      }
+    } else {
+      state = movement == "real" ? movingStateAt(*show, *profiles, *list, *cue, atS)
+                                 : stateAt(*show, *profiles, *list, *cue, atS);
+    }
   }
 
   // The strobe runs on the playback clock, which starts at GO: --at is also the gate's time.

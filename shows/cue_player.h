@@ -34,10 +34,16 @@ class CuePlayer {
   StageState state(double nowS);
   // Fires the follows due by nowS.
   void update(double nowS);
+  // The stage at nowS as it stands, firing no follow (for merging several lists in time order).
+  StageState peek(double nowS) const { return stageAt(nowS); }
 
   std::optional<size_t> currentCue() const { return current_; }  // the cue last gone into
   bool fading(double nowS) const;                                   // delay or fade under way
   std::optional<double> nextFollowAtS() const { return followAtS_; }
+  // The stage the fade under way started from (the snapshot taken at GO). Several lists played
+  // at once (shows/playbacks.h) replace in it the attributes another list had on stage then, so
+  // that a list taking an attribute over fades it from what the audience saw.
+  StageState& fadeStart() { return from_; }
 
  private:
   void start(size_t cueIndex, double atS, bool armFollow);

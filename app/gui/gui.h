@@ -154,6 +154,7 @@ void handleShortcuts(Gui& gui);
 void drawMenuBar(Gui& gui);
 void drawShowPanel(Gui& gui);  // the left panel's tabs
 void drawCuesTab(Gui& gui);
+void drawPlaybacksTab(Gui& gui);  // every cue list: GO, BACK, master
 void drawFixturesTab(Gui& gui);
 void drawLibraryTab(Gui& gui);
 void drawPatchTab(Gui& gui);

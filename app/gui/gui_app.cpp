@@ -49,7 +49,7 @@ struct Options {
 };
 
 constexpr const char* kUsage =
-    "haze open SHOW [--width W --height H] [--cue N] [--select ID]... [--tab cues|fixtures|library|patch|air]\n"
+    "haze open SHOW [--width W --height H] [--cue N] [--select ID]... [--tab cues|fixtures|library|patch|air|playback]\n"
     "               [--quality draft|default|high] [--help-window] [--sacn] [--artnet] [--bind ADDR]\n"
     "               [--exposure EV] [--exposure-mode auto|manual] [--screenshot OUT.png [--frames N]]\n"
     "The designer's GUI on a show (the bundled demo when none is given); docs/gui.md.\n"
@@ -83,7 +83,7 @@ std::optional<int> parseOptions(const Args& args, Options& opt) {
       .flag("--sacn", opt.sacn)
       .flag("--help-window", opt.help)
       .text("--bind", opt.bind, "an address")
-      .text("--tab", opt.tab, "cues, fixtures, library, patch or air")
+      .text("--tab", opt.tab, "cues, fixtures, library, patch, air or playback")
       .text("--cue", opt.cue, "a cue number")
       .integer("--frames", opt.frames, 1, 1000000, "a positive number")
       .integer("--width", opt.width, 1, 16384, "a positive number")
@@ -130,12 +130,12 @@ Status applyOptions(Gui& gui, const Options& opt) {
   gui.exposureEv = exposure.ev;
   gui.showHelp = opt.help;
   if (!opt.tab.empty()) {
-    const std::string names[] = {"Cues", "Fixtures", "Library", "Patch", "Air"};
+    const std::string names[] = {"Cues", "Fixtures", "Library", "Patch", "Air", "Playback"};
     for (const std::string& n : names)
       if (std::equal(n.begin(), n.end(), opt.tab.begin(), opt.tab.end(),
                      [](char a, char b) { return std::tolower(a) == std::tolower(b); }))
         gui.openTab = n;
-    if (gui.openTab.empty()) return Error{"", "--tab", "expected cues, fixtures, library, patch or air, not '" + opt.tab + "'"};
+    if (gui.openTab.empty()) return Error{"", "--tab", "expected cues, fixtures, library, patch, air or playback, not '" + opt.tab + "'"};
   }
   gui.recent = loadRecentFiles(recentFilesPath());
   if (opt.artNet || opt.sacn) {
@@ -271,11 +271,13 @@ struct ChangeWatch {
   float fovDeg = 0.0f;
   std::uint64_t revision = 0;
   bool bodies = true;
+  StageState stage;  // a master fader or a snap changes the stage without an edit or a fade
 
   bool changing(const Gui& gui) {
     const bool moving = gui.heads && !gui.heads->settled();
     const bool changed = gui.live || gui.doc->fading(gui.nowS) || moving || !(gui.orbit == orbit) || gui.fovYDeg != fovDeg ||
-                         gui.doc->revision() != revision || gui.showBodies != bodies;
+                         gui.doc->revision() != revision || gui.showBodies != bodies || gui.stage != stage;
+    stage = gui.stage;
     bodies = gui.showBodies;
     orbit = gui.orbit;
     fovDeg = gui.fovYDeg;

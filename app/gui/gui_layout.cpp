@@ -50,6 +50,10 @@ void drawShowPanel(Gui& gui) {
       drawAtmosphereTab(gui);
       ImGui::EndTabItem();
     }
+    if (ImGui::BeginTabItem("Playback", nullptr, flag("Playback"))) {
+      drawPlaybacksTab(gui);
+      ImGui::EndTabItem();
+    }
     ImGui::EndTabBar();
     gui.openTab.clear();
   }

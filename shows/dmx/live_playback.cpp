@@ -2,6 +2,7 @@
 #include "shows/dmx/live_playback.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace haze {
 
@@ -20,9 +21,16 @@ void merge(CueValues& into, const CueValues& v) {
 }  // namespace
 
 LivePlayback::LivePlayback(const Show& show, const ProfileSet& profiles, const CueList* list)
-    : show_(show), profiles_(profiles), list_(list) {
+    : show_(show), profiles_(profiles), list_(list), playbacks_(show, profiles) {
   if (!list_) return;
-  player_ = std::make_unique<CuePlayer>(show_, profiles_, *list_);
+  // Cue list names are unique in a show (loadShow refuses repeats).
+  const auto i = playbacks_.find(list_->name);
+  if (!i) {
+    list_ = nullptr;
+    return;
+  }
+  main_ = *i;
+  list_ = &playbacks_.list(main_);
   for (size_t i = 0; i < list_->cues.size(); ++i)
     if (auto t = parseTimecode(list_->cues[i].timecode)) timed_.push_back({*t, i});
 }
@@ -50,24 +58,45 @@ Result<std::string> LivePlayback::apply(const OscCommand& c, double nowS) {
     programmer_.clear();
     return std::string("programmer cleared");
   }
-  if (!player_) return Error{"", "cue list", "the show has no cue list to play"};
+  if (c.kind == K::ListGo || c.kind == K::ListBack || c.kind == K::ListMaster) {
+    const auto i = playbacks_.find(c.list);
+    if (!i) {
+      std::string names;
+      for (const CueList& l : show_.cueLists) names += (names.empty() ? "\"" : ", \"") + l.name + "\"";
+      return Error{"", "cue list", "the show has no cue list \"" + c.list + "\"; its lists are " +
+                                       (names.empty() ? "none" : names)};
+    }
+    const std::string name = "cue list \"" + c.list + "\"";
+    if (c.kind == K::ListMaster) {
+      playbacks_.setMaster(*i, c.level);
+      char level[32];
+      std::snprintf(level, sizeof level, "%g", playbacks_.master(*i));
+      return name + ": master " + level;
+    }
+    if (c.kind == K::ListGo && !playbacks_.go(*i, nowS))
+      return Error{"", "GO", "no cue after the current one in " + name};
+    if (c.kind == K::ListBack && !playbacks_.back(*i, nowS))
+      return Error{"", "BACK", "no cue before the current one in " + name};
+    return name + ": cue " + playbacks_.list(*i).cues[*playbacks_.currentCue(*i)].number;
+  }
+  if (!list_) return Error{"", "cue list", "the show has no cue list to play"};
   const std::string listName = list_->name.empty() ? "the cue list" : "cue list \"" + list_->name + "\"";
   switch (c.kind) {
     case K::Go:
-      if (!player_->go(nowS)) return Error{"", "GO", "no cue after the current one in " + listName};
+      if (!playbacks_.go(main_, nowS)) return Error{"", "GO", "no cue after the current one in " + listName};
       break;
     case K::Back:
-      if (!player_->back(nowS)) return Error{"", "BACK", "no cue before the current one in " + listName};
+      if (!playbacks_.back(main_, nowS)) return Error{"", "BACK", "no cue before the current one in " + listName};
       break;
     case K::Goto: {
       auto index = findCue(*list_, c.cue);
       if (!index) return index.error();
-      player_->gotoCue(*index, nowS);
+      playbacks_.gotoCue(main_, *index, nowS);
       break;
     }
     default: break;
   }
-  return "cue " + list_->cues[*player_->currentCue()].number;
+  return "cue " + list_->cues[*playbacks_.currentCue(main_)].number;
 }
 
 std::string LivePlayback::chase(const Timecode& time, double nowS) {
@@ -75,23 +104,23 @@ std::string LivePlayback::chase(const Timecode& time, double nowS) {
   for (const auto& [t, index] : timed_)
     if (t <= time) target = index;
   if (target) {
-    if (player_->currentCue() == target) return "";
-    player_->jumpTo(*target, nowS);
+    if (playbacks_.currentCue(main_) == target) return "";
+    playbacks_.jumpTo(main_, *target, nowS);
     return "chased to cue " + list_->cues[*target].number;
   }
-  if (!player_->currentCue()) return "";
-  player_ = std::make_unique<CuePlayer>(show_, profiles_, *list_);
+  if (!playbacks_.currentCue(main_)) return "";
+  playbacks_.release(main_);
   return "before the first timed cue: the stage at its defaults";
 }
 
 std::string LivePlayback::timecode(const Timecode& time, double fps, double nowS) {
-  if (!player_ || timed_.empty()) return "";
+  if (!list_ || timed_.empty()) return "";
   const double seconds = time.toSeconds(fps);
   std::string fired;
   if (lastTime_ && seconds >= lastSeconds_ && seconds - lastSeconds_ <= 1.0) {
     for (const auto& [t, index] : timed_) {
       if (*lastTime_ < t && t <= time) {
-        player_->gotoCue(index, nowS);
+        playbacks_.gotoCue(main_, index, nowS);
         fired += (fired.empty() ? "fired cue " : ", cue ") + list_->cues[index].number;
       }
     }
@@ -104,7 +133,7 @@ std::string LivePlayback::timecode(const Timecode& time, double fps, double nowS
 }
 
 StageState LivePlayback::stage(double nowS, const StageState& dmx, const std::set<int>& dmxFixtures) {
-  StageState s = player_ ? player_->state(nowS) : defaultState(show_);
+  StageState s = playbacks_.state(nowS);  // every list merged; defaults where none plays
   for (int id : dmxFixtures)
     if (auto it = dmx.find(id); it != dmx.end()) s[id] = it->second;
   for (const auto& [id, v] : programmer_)

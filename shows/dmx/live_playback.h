@@ -1,6 +1,7 @@
-// The cue engine of `haze live` when it is remote-controlled (OSC) or on timecode: a CuePlayer
-// on one cue list, a programmer that OSC fixture messages set, and the DMX input laid over both
-// for the fixtures on universes a console is sending. Time is passed in (seconds on a monotonic
+// The cue engine of `haze live` when it is remote-controlled (OSC) or on timecode: every cue list
+// of the show on one Playbacks (shows/playbacks.h; /haze/go, /haze/back, /haze/cue and timecode
+// play the chosen list, /haze/list/NAME/... any list), a programmer that OSC fixture messages
+// set, and the DMX input laid over both for the fixtures on universes a console is sending. Time is passed in (seconds on a monotonic
 // clock), so tests inject it.
 //
 // Timecode (docs/live.md, "Timecode"): cues with a `timecode` fire when the time reaches it.
@@ -18,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "shows/cue_player.h"
+#include "shows/playbacks.h"
 #include "shows/dmx/osc_command.h"
 #include "shows/timecode.h"
 
@@ -38,7 +39,7 @@ class LivePlayback {
   // Playback at nowS, the fixtures in dmxFixtures taken from dmx instead, the programmer over all.
   StageState stage(double nowS, const StageState& dmx, const std::set<int>& dmxFixtures);
 
-  std::optional<size_t> currentCue() const { return player_ ? player_->currentCue() : std::nullopt; }
+  std::optional<size_t> currentCue() const { return list_ ? playbacks_.currentCue(main_) : std::nullopt; }
   const std::map<int, CueValues>& programmer() const { return programmer_; }
   // The camera /haze/camera chose ("" until then: the command line's).
   const std::string& camera() const { return camera_; }
@@ -49,7 +50,8 @@ class LivePlayback {
   const Show& show_;
   const ProfileSet& profiles_;
   const CueList* list_;
-  std::unique_ptr<CuePlayer> player_;
+  Playbacks playbacks_;
+  size_t main_ = 0;  // list_'s playback
   std::map<int, CueValues> programmer_;
   std::string camera_;
   std::vector<std::pair<Timecode, size_t>> timed_;  // the list's timed cues, in list order

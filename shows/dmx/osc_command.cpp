@@ -114,6 +114,24 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
     r.ok = true;
     return r;
   }
+  if (verb == "list" && parts.size() == 4 && !parts[2].empty()) {
+    r.command.list = parts[2];
+    const std::string& what = parts[3];
+    if (what == "go" || what == "back") {
+      if (argc != 0) return fail(r.address + " takes no arguments");
+      r.command.kind = what == "go" ? OscCommand::Kind::ListGo : OscCommand::Kind::ListBack;
+    } else if (what == "master") {
+      const auto v = argc == 1 ? number(t[0], argv[0]) : std::nullopt;
+      if (!v || !std::isfinite(*v) || *v < 0 || *v > 1)
+        return fail(r.address + " takes one number 0..1, the master level (got type tags '" + t + "')");
+      r.command.kind = OscCommand::Kind::ListMaster;
+      r.command.level = *v;
+    } else {
+      return fail(r.address + ": unknown list command '" + what + "'; expected go, back or master");
+    }
+    r.ok = true;
+    return r;
+  }
   if (verb == "fixture" && parts.size() == 4) {
     const std::string& idText = parts[2];
     if (idText.empty() || idText.size() > 9 || idText.find_first_not_of("0123456789") != std::string::npos)
@@ -174,7 +192,7 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
     return r;
   }
   return fail("unknown address " + r.address +
-              "; expected /haze/go, /haze/back, /haze/cue N, /haze/fixture/ID/ATTRIBUTE or /haze/clear");
+              "; expected /haze/go, /haze/back, /haze/cue N, /haze/fixture/ID/ATTRIBUTE, /haze/clear or /haze/list/NAME/go|back|master");
 }
 
 std::vector<uint8_t> oscReply(const OscParse& p) {

@@ -8,6 +8,8 @@
 //                                         iris 0..1, color R G B (0..1 each), gobo NAME
 //   /haze/fixture/ID/clear, /haze/clear   take one fixture or every fixture out of the programmer
 //   /haze/camera NAME                     view the stage through the show's camera NAME
+//   /haze/list/NAME/go, .../back          GO, BACK on the cue list NAME (several lists at once)
+//   /haze/list/NAME/master V              that list's master, 0..1
 // Pure bytes in: no sockets, never throws; bundles are refused (one message per datagram).
 #pragma once
 
@@ -21,10 +23,12 @@
 namespace haze {
 
 struct OscCommand {
-  enum class Kind { Go, Back, Goto, SetFixture, ClearFixture, ClearAll, Camera };
+  enum class Kind { Go, Back, Goto, SetFixture, ClearFixture, ClearAll, Camera, ListGo, ListBack, ListMaster };
   Kind kind = Kind::Go;
   std::string cue;      // Goto
   std::string camera;   // Camera: the camera's name
+  std::string list;     // ListGo, ListBack, ListMaster: the cue list's name
+  double level = 1.0;   // ListMaster
   int fixture = 0;      // SetFixture, ClearFixture
   CueValues values;     // SetFixture: one attribute set
 };

@@ -214,77 +214,69 @@ std::set<int> patchConflicts(const Show& show, const ProfileSet& profiles) {
 
 // --- Playback. ---
 
+void ShowDocument::resetPlayer() {
+  // What each list had on stage, by position, and the order the lists last started in.
+  std::vector<std::optional<size_t>> cues;
+  std::vector<double> masters;
+  std::vector<size_t> order;
+  if (playbacks_) {
+    for (size_t i = 0; i < playbacks_->size(); ++i) {
+      cues.push_back(playbacks_->currentCue(i));
+      masters.push_back(playbacks_->master(i));
+    }
+    order = playbacks_->startOrder();
+  }
+  playbacks_.reset();
+  playerCues_ = show_.cueLists;
+  playbacks_ = std::make_unique<Playbacks>(show_, profiles_);
+  for (size_t i = 0; i < masters.size() && i < playbacks_->size(); ++i) playbacks_->setMaster(i, masters[i]);
+  // Jumps in the old start order give each attribute to the list that had it (the fades are over).
+  for (size_t i : order) {
+    if (i >= playbacks_->size() || !cues[i]) continue;
+    const size_t n = playbacks_->list(i).cues.size();
+    if (n > 0) playbacks_->jumpTo(i, std::min(*cues[i], n - 1), lastNowS_);
+  }
+}
+
 const CueList* ShowDocument::cueList() const { return show_.cueLists.empty() ? nullptr : &show_.cueLists.front(); }
 
-void ShowDocument::resetPlayer() {
-  const CueList* list = cueList();
-  std::optional<size_t> keep = player_ ? player_->currentCue() : lastCue_;
-  player_.reset();
-  playerCues_ = show_.cueLists;
-  if (!list) {
-    lastCue_.reset();
-    return;
-  }
-  player_ = std::make_unique<CuePlayer>(show_, profiles_, *list);
-  if (keep && !list->cues.empty()) {
-    player_->jumpTo(std::min(*keep, list->cues.size() - 1), lastNowS_);
-    lastGoAtS_ = -1e9;  // the fade, if one was running, is over: the cue is on stage in full
-  }
-  lastCue_ = player_->currentCue();
+bool ShowDocument::listGo(size_t list, double nowS) { return playbacks_ && playbacks_->go(list, nowS); }
+bool ShowDocument::listBack(size_t list, double nowS) { return playbacks_ && playbacks_->back(list, nowS); }
+bool ShowDocument::gotoCue(size_t index, double nowS) { return playbacks_ && playbacks_->gotoCue(0, index, nowS); }
+bool ShowDocument::jumpTo(size_t index, double nowS) { return playbacks_ && playbacks_->jumpTo(0, index, nowS); }
+
+std::optional<size_t> ShowDocument::listCue(size_t list) const {
+  if (!playbacks_ || list >= playbacks_->size()) return std::nullopt;
+  return playbacks_->currentCue(list);
 }
 
-bool ShowDocument::go(double nowS) {
-  if (!player_ || !player_->go(nowS)) return false;
-  lastGoAtS_ = nowS;
-  lastCue_ = player_->currentCue();
-  return true;
+void ShowDocument::setListMaster(size_t list, double level) {
+  if (playbacks_) playbacks_->setMaster(list, level);
 }
 
-bool ShowDocument::back(double nowS) {
-  if (!player_ || !player_->back(nowS)) return false;
-  lastGoAtS_ = nowS;
-  lastCue_ = player_->currentCue();
-  return true;
+double ShowDocument::listMaster(size_t list) const {
+  return playbacks_ && list < playbacks_->size() ? playbacks_->master(list) : 1.0;
 }
 
-bool ShowDocument::gotoCue(size_t index, double nowS) {
-  if (!player_ || !player_->gotoCue(index, nowS)) return false;
-  lastGoAtS_ = nowS;
-  lastCue_ = player_->currentCue();
-  return true;
-}
-
-bool ShowDocument::jumpTo(size_t index, double nowS) {
-  if (!player_ || !player_->jumpTo(index, nowS)) return false;
-  lastGoAtS_ = -1e9;
-  lastCue_ = player_->currentCue();
-  return true;
-}
-
-std::optional<size_t> ShowDocument::currentCue() const { return player_ ? player_->currentCue() : std::nullopt; }
-
-double ShowDocument::fadeProgress(double nowS) const {
-  const CueList* list = cueList();
-  const auto c = currentCue();
-  if (!list || !c || *c >= list->cues.size()) return 1.0;
-  const Cue& cue = list->cues[*c];
+double ShowDocument::listFadeProgress(size_t list, double nowS) const {
+  const auto c = listCue(list);
+  const auto startedAt = c ? playbacks_->lastStartS(list) : std::nullopt;
+  if (!c || !startedAt || *c >= show_.cueLists[list].cues.size()) return 1.0;
+  const Cue& cue = show_.cueLists[list].cues[*c];
   // The whole cue, its last part and the end of its fan included.
-  return haze::fadeProgress(CueTiming{cue.delayS, cueDurationS(show_, cue) - cue.delayS}, nowS - lastGoAtS_);
+  return haze::fadeProgress(CueTiming{cue.delayS, cueDurationS(show_, cue) - cue.delayS}, nowS - *startedAt);
 }
 
-bool ShowDocument::fading(double nowS) const { return player_ && player_->fading(nowS); }
+bool ShowDocument::fading(double nowS) const {
+  if (!playbacks_) return false;
+  for (size_t i = 0; i < playbacks_->size(); ++i)
+    if (playbacks_->fading(i, nowS)) return true;
+  return false;
+}
 
 StageState ShowDocument::stageState(double nowS) {
   lastNowS_ = nowS;
-  StageState s = defaultState(show_);
-  if (player_) {
-    const auto followAt = player_->nextFollowAtS();
-    s = player_->state(nowS);
-    if (player_->currentCue() != lastCue_) {  // a follow fired
-      lastGoAtS_ = followAt.value_or(nowS);
-      lastCue_ = player_->currentCue();
-    }
-  }
+  StageState s = playbacks_ ? playbacks_->state(nowS) : defaultState(show_);
   // Fixtures placed or deleted since the player was built: at their defaults, or gone.
   for (const auto& [id, a] : defaultState(show_)) s.try_emplace(id, a);
   std::erase_if(s, [&](const auto& entry) { return show_.findFixture(entry.first) == nullptr; });

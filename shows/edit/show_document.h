@@ -16,7 +16,7 @@
 #include "shows/edit/picking.h"
 #include "renderer/scene/bvh.h"
 #include "renderer/scene/venue.h"
-#include "shows/cue_player.h"
+#include "shows/playbacks.h"
 #include "shows/edit/edit_commands.h"
 #include "shows/edit/edit_history.h"
 #include "shows/focus.h"
@@ -79,18 +79,29 @@ class ShowDocument {
   // --- Selection (fixture ids, sorted). ---
   std::vector<int> selection;
 
-  // --- Playback of the first cue list (GO, BACK, GOTO). An edit of the cues rebuilds the player
-  // on the same cue, in full; other edits (fixtures, programmer) leave a running fade alone. ---
-  // The cue list played, or null when the show has none.
+  // --- Playback: every cue list at once (shows/playbacks.h), each with GO, BACK and a master;
+  // the methods without a list act on the first list, which Record and the cue tab edit. An edit
+  // of the cues rebuilds the players on the same cues, in full (masters kept); other edits
+  // (fixtures, programmer) leave a running fade alone. ---
+  // The first cue list, or null when the show has none.
   const CueList* cueList() const;
-  bool go(double nowS);
-  bool back(double nowS);
+  bool go(double nowS) { return listGo(0, nowS); }
+  bool back(double nowS) { return listBack(0, nowS); }
   bool gotoCue(size_t index, double nowS);
   bool jumpTo(size_t index, double nowS);
-  std::optional<size_t> currentCue() const;
-  // 0..1 of the current cue's fade (-1 in its delay, 1 when done or when no cue is active).
-  double fadeProgress(double nowS) const;
+  std::optional<size_t> currentCue() const { return listCue(0); }
+  // 0..1 of the first list's current fade (-1 in its delay, 1 when done or when no cue is active).
+  double fadeProgress(double nowS) const { return listFadeProgress(0, nowS); }
   bool fading(double nowS) const;
+
+  // Cue list `list` (an index into show().cueLists); false when there is no such cue or list.
+  size_t listCount() const { return show_.cueLists.size(); }
+  bool listGo(size_t list, double nowS);
+  bool listBack(size_t list, double nowS);
+  std::optional<size_t> listCue(size_t list) const;
+  double listFadeProgress(size_t list, double nowS) const;
+  void setListMaster(size_t list, double level);
+  double listMaster(size_t list) const;
   // The stage now: playback with the programmer laid over it (what is rendered).
   StageState stageState(double nowS);
 
@@ -109,10 +120,8 @@ class ShowDocument {
   bool libraryChanged_ = false;
   std::uint64_t revision_ = 1;
 
-  std::unique_ptr<CuePlayer> player_;
-  std::vector<CueList> playerCues_;  // the cue lists the player was built on
-  std::optional<size_t> lastCue_;
-  double lastGoAtS_ = 0.0;
+  std::unique_ptr<Playbacks> playbacks_;
+  std::vector<CueList> playerCues_;  // the cue lists the players were built on
   double lastNowS_ = 0.0;
 };
 

@@ -46,6 +46,7 @@ check invalid "$repo/tests/data/shows/broken/newer-version.haze.json"
 check invalid "$repo/tests/data/shows/broken/bad-cues.haze.json"
 check valid "$repo/tests/data/shows/optics.haze.json"
 check valid "$repo/tests/data/shows/palettes.haze.json"
+check valid "$repo/tests/data/shows/playbacks.haze.json"
 check valid "$repo/tests/data/shows/broken/bad-palettes.haze.json"  # only haze validate sees dangling names
 check invalid "$repo/tests/data/shows/broken/palette-in-palette.haze.json"  # a palette cannot refer to one
 check invalid "$repo/tests/data/shows/broken/bad-optics.haze.json"  # a 500 Hz strobe, three blades

@@ -132,5 +132,38 @@ TEST(LivePlayback, DmxFixturesFollowTheConsole) {
   EXPECT_FLOAT_EQ(p.stage(0.1, dmx, {}).at(101).intensity, 0.2f);
 }
 
+// /haze/list/NAME/...: a second list GOes, BACKs and is mastered by name beside the played one;
+// intensity merges HTP (docs/shows.md, "Several cue lists at once").
+TEST(LivePlayback, OscDrivesOtherListsByName) {
+  test::TestShow t = timedShow();
+  CueList specials;
+  specials.name = "Specials";
+  specials.cues = {cue("1", "", 0.5f), cue("2", "", 0.1f)};
+  specials.cues[1].values[102].panDeg = 30.0f;
+  t.show.cueLists.push_back(specials);
+  LivePlayback p(t.show, t.profiles, &t.show.cueLists[0]);
+  OscCommand c;
+  EXPECT_EQ(*p.apply(c, 0.0), "cue 1");  // Main: 101 at 0.2
+  c.kind = OscCommand::Kind::ListGo;
+  c.list = "Specials";
+  EXPECT_EQ(*p.apply(c, 0.1), "cue list \"Specials\": cue 1");
+  EXPECT_FLOAT_EQ(intensity(p, 0.2), 0.5f);  // max(0.2, 0.5)
+  c.kind = OscCommand::Kind::ListMaster;
+  c.level = 0.25;
+  EXPECT_EQ(*p.apply(c, 0.3), "cue list \"Specials\": master 0.25");
+  EXPECT_FLOAT_EQ(intensity(p, 0.3), 0.2f);  // max(0.2, 0.25 x 0.5)
+  c.kind = OscCommand::Kind::ListGo;
+  EXPECT_EQ(*p.apply(c, 0.4), "cue list \"Specials\": cue 2");
+  EXPECT_FLOAT_EQ(p.stage(0.4, {}, {}).at(102).panDeg, 30.0f);
+  EXPECT_FALSE(p.apply(c, 0.5)) << "no cue after 2";
+  c.kind = OscCommand::Kind::ListBack;
+  EXPECT_EQ(*p.apply(c, 0.6), "cue list \"Specials\": cue 1");
+  EXPECT_EQ(p.currentCue(), std::optional<size_t>(0));  // the played list did not move
+  c.list = "Nope";
+  auto bad = p.apply(c, 0.7);
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().message.find("its lists are \"Main\", \"Specials\""), std::string::npos) << bad.error().message;
+}
+
 }  // namespace
 }  // namespace haze

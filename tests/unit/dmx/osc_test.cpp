@@ -70,6 +70,19 @@ TEST(Osc, Camera) {
   }
 }
 
+TEST(Osc, ListCommands) {
+  const OscParse go = parseOscCommand(osc("/haze/list/Specials/go"));
+  ASSERT_TRUE(go.ok) << go.error;
+  EXPECT_EQ(go.command.kind, OscCommand::Kind::ListGo);
+  EXPECT_EQ(go.command.list, "Specials");
+  EXPECT_EQ(parseOscCommand(osc("/haze/list/Main/back")).command.kind, OscCommand::Kind::ListBack);
+  const OscParse m = parseOscCommand(osc("/haze/list/Specials/master", {{'f', 0.25}}));
+  ASSERT_TRUE(m.ok) << m.error;
+  EXPECT_EQ(m.command.kind, OscCommand::Kind::ListMaster);
+  EXPECT_DOUBLE_EQ(m.command.level, 0.25);
+  EXPECT_DOUBLE_EQ(parseOscCommand(osc("/haze/list/A/master", {{'i', 1}})).command.level, 1.0);
+}
+
 TEST(Osc, FixtureAttributes) {
   const OscParse i = parseOscCommand(osc("/haze/fixture/12/intensity", {{'f', 0.5}}));
   ASSERT_TRUE(i.ok) << i.error;
@@ -101,6 +114,11 @@ TEST(Osc, BadMessagesAreRefusedWithAReason) {
   refused(osc("/haze/cue"), "one argument");
   refused(osc("/haze/go", {{'i', 1}}), "no arguments");
   refused(osc("/other/go"), "unknown address");
+  refused(osc("/haze/list/A/master", {{'f', 1.5}}), "0..1");
+  refused(osc("/haze/list/A/master"), "one number 0..1");
+  refused(osc("/haze/list/A/go", {{'i', 1}}), "no arguments");
+  refused(osc("/haze/list/A/stop"), "unknown list command");
+  refused(osc("/haze/list//go"), "unknown address");
   refused(std::vector<uint8_t>{'#', 'b', 'u', 'n', 'd', 'l', 'e', 0, 0, 0, 0, 0, 0, 0, 0, 1}, "bundles");
   refused({}, "not an OSC message");
   auto cut = osc("/haze/fixture/1/intensity", {{'f', 1}});

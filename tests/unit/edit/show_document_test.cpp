@@ -219,6 +219,35 @@ TEST(ShowDocument, PlaybackGoBackGotoAndFadeProgress) {
   EXPECT_FALSE(doc.fading(46.0));
 }
 
+// The Playback tab's model: a second list GOes beside the first, its master scales its
+// intensity, and an edit of the cues keeps every list on its cue, its master and the order of
+// their GOs (values from tests/data/shows/playbacks.haze.json, worked out in docs/shows.md).
+TEST(ShowDocument, SeveralListsPlayAtOnce) {
+  auto opened = ShowDocument::open(fs::path(HAZE_SOURCE_DIR) / "tests/data/shows/playbacks.haze.json");
+  ASSERT_TRUE(opened) << opened.error().str();
+  ShowDocument& doc = **opened;
+  ASSERT_EQ(doc.listCount(), 2u);
+  ASSERT_TRUE(doc.go(0.0));             // Main cue 1: 1 at 0.6 pan 30, 2 at 0.2
+  ASSERT_TRUE(doc.listGo(1, 1.0));      // Specials cue 1, fade 2: 1 at 0.5 pan 90, 2 at 0.8
+  EXPECT_NEAR(doc.listFadeProgress(1, 2.0), 0.5, 1e-9);
+  EXPECT_FLOAT_EQ(doc.stageState(2.0).at(2).intensity, 0.4f);  // max(0.2, 0.4)
+  StageState s = doc.stageState(3.0);
+  EXPECT_FLOAT_EQ(s.at(1).intensity, 0.6f);
+  EXPECT_FLOAT_EQ(s.at(2).intensity, 0.8f);
+  EXPECT_FLOAT_EQ(s.at(1).panDeg, 90.0f);
+  doc.setListMaster(1, 0.5);
+  EXPECT_FLOAT_EQ(doc.stageState(3.0).at(2).intensity, 0.4f);  // max(0.2, 0.5 x 0.8)
+  ASSERT_TRUE(doc.run(labelCue("Main", "1", "Renamed")));
+  EXPECT_EQ(doc.listCue(0), 0u);
+  EXPECT_EQ(doc.listCue(1), 0u);
+  EXPECT_EQ(doc.listMaster(1), 0.5);
+  s = doc.stageState(4.0);
+  EXPECT_FLOAT_EQ(s.at(2).intensity, 0.4f);
+  EXPECT_FLOAT_EQ(s.at(1).panDeg, 90.0f);  // Specials GOed last, and still holds pan
+  EXPECT_FALSE(doc.listBack(1, 5.0));      // nothing before its cue 1
+  EXPECT_FALSE(doc.listGo(7, 5.0));        // no such list
+}
+
 TEST(ShowDocument, ProfilesFromFilesJoinTheLibrary) {
   auto opened = ShowDocument::open(kDemo);
   ASSERT_TRUE(opened);
