@@ -14,6 +14,7 @@
 //   gui_help.cpp        the shortcuts window (F1)
 //   gui_import.cpp      the window listing an MVR import's warnings
 //   gui_command.cpp     the console command line under the show panel
+//   desktop_dialog.cpp  the desktop's file dialog (zenity or kdialog) as a child process
 // Panels draw with ImGui and change the show only through ShowDocument (commands, undo).
 #pragma once
 
@@ -28,6 +29,7 @@
 #include <imgui_internal.h>  // GetItemID: which widget an edit came from (undo merging)
 
 #include "app/atmosphere_field.h"
+#include "app/gui/desktop_dialog.h"
 #include "shows/edit/show_document.h"
 #include "shows/movement.h"
 #include "app/render_job.h"
@@ -124,6 +126,8 @@ struct Gui {
   std::string guardedPath;
   bool openGuardPopup = false;
   bool quitConfirmed = false;
+  DesktopDialog dialog;                      // the desktop's file dialog, while it is open
+  FileAction dialogAction = FileAction::None;
 
   // Key presses since the last frame, from GLFW's key callback. ImGui 1.86 keeps only whether a
   // key is down at each frame, so a tap shorter than a frame (a slow frame while refining, or
