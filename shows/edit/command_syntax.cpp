@@ -206,7 +206,7 @@ class Parser {
     if (atEnd()) return expected("a fixture id or 'group'", after);
     if (word() == "group") {
       ++i_;
-      auto g = name("group", after.empty() ? "'group'" : "'group'");
+      auto g = name("group", "'group'");
       if (!g) return g.error();
       return show_.groups[*g].fixtures;
     }
