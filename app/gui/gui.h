@@ -13,6 +13,8 @@
 //   gui_inspector.cpp   the selection: transform, pan/tilt, focus, attributes
 //   gui_help.cpp        the shortcuts window (F1)
 //   gui_import.cpp      the window listing an MVR import's warnings
+//   gui_command.cpp     the console command line under the show panel
+//   desktop_dialog.cpp  the desktop's file dialog (zenity or kdialog) as a child process
 // Panels draw with ImGui and change the show only through ShowDocument (commands, undo).
 #pragma once
 
@@ -27,6 +29,7 @@
 #include <imgui_internal.h>  // GetItemID: which widget an edit came from (undo merging)
 
 #include "app/atmosphere_field.h"
+#include "app/gui/desktop_dialog.h"
 #include "shows/edit/show_document.h"
 #include "shows/movement.h"
 #include "app/render_job.h"
@@ -57,6 +60,7 @@ struct Rect {
 struct Layout {
   float menuH = 0;
   Rect left, right, viewport;  // window coordinates, pixel (0, 0) at the top left
+  Rect command;                // the command line, under the show panel
 };
 Layout layoutFor(float widthPx, float heightPx, float menuHeightPx);
 
@@ -101,6 +105,15 @@ struct Gui {
   bool showImportWarnings = false;
   std::string openTab;  // a tab of the show panel to bring to the front once ("Patch"...)
 
+  // The console command line (gui_command.cpp): the field, the lines run (oldest first), which
+  // of them Up/Down show (-1: none), the last result or error and what Tab offered.
+  char commandField[512] = "";
+  std::vector<std::string> commandHistory;
+  int commandBrowse = -1;
+  bool focusCommand = false;
+  std::string commandResult, commandOffered;
+  bool commandError = false;
+
   // Cues panel: the cue picked for editing (not the one on stage).
   std::optional<size_t> cueCursor;
 
@@ -113,6 +126,8 @@ struct Gui {
   std::string guardedPath;
   bool openGuardPopup = false;
   bool quitConfirmed = false;
+  DesktopDialog dialog;                      // the desktop's file dialog, while it is open
+  FileAction dialogAction = FileAction::None;
 
   // Key presses since the last frame, from GLFW's key callback. ImGui 1.86 keeps only whether a
   // key is down at each frame, so a tap shorter than a frame (a slow frame while refining, or
@@ -162,6 +177,7 @@ void drawAtmosphereTab(Gui& gui);
 void drawInspector(Gui& gui);
 void drawHelp(Gui& gui);
 void drawImportWarnings(Gui& gui);
+void drawCommandLine(Gui& gui);
 void drawFileDialogs(Gui& gui);
 void handleViewport(Gui& gui);  // mouse in the viewport, then the overlay
 

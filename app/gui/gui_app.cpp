@@ -213,6 +213,7 @@ void drawPanels(Gui& gui, int winW, int winH) {
   handleShortcuts(gui);
   drawMenuBar(gui);
   drawShowPanel(gui);
+  drawCommandLine(gui);
   drawInspector(gui);
   drawHelp(gui);
   drawImportWarnings(gui);

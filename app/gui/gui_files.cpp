@@ -1,7 +1,8 @@
 // Files: new, open (by path, or from the recent list), import MVR, save, save as, adding profile
 // files to the library, and the unsaved-changes guard in front of everything that would drop
-// the open show (new, open, quit, closing the window). Paths are typed into a popup (there is
-// no file browser): it starts in the show's folder.
+// the open show (new, open, quit, closing the window). Open, Import MVR and Add profile use the
+// desktop's file dialog (desktop_dialog.h) when there is one; Save as, and everything when there
+// is none, takes a typed path in a popup that starts in the show's folder.
 #include <GLFW/glfw3.h>
 
 #include <cstdio>
@@ -60,6 +61,30 @@ void askPath(Gui& gui, FileAction action) {
   std::snprintf(gui.pathField, sizeof(gui.pathField), "%s", start.c_str());
 }
 
+// The desktop's dialog for choosing an existing file; false when there is none (type the path).
+bool startDesktopDialog(Gui& gui, FileAction action) {
+  if (gui.dialog.running()) {
+    gui.say("a file dialog is already open", true);
+    return true;
+  }
+  std::string folder = folderOf(gui);
+  if (folder.size() > 1 && folder.back() == '/') folder.pop_back();
+  bool started = false;
+  switch (action) {
+    case FileAction::Open: started = gui.dialog.start("Open show", folder, "Shows", {"*.haze.json"}); break;
+    case FileAction::ImportMvr: started = gui.dialog.start("Import MVR", folder, "MVR files", {"*.mvr"}); break;
+    case FileAction::AddProfile:
+      started = gui.dialog.start("Add profile", folder, "Profiles", {"*.json", "*.ies", "*.ldt", "*.gdtf"});
+      break;
+    default: break;
+  }
+  if (started) {
+    gui.dialogAction = action;
+    gui.say("choose the file in the dialog");
+  }
+  return started;
+}
+
 // Does what was asked, the guard having been passed.
 void perform(Gui& gui, FileAction action, const std::string& path) {
   switch (action) {
@@ -80,8 +105,10 @@ void perform(Gui& gui, FileAction action, const std::string& path) {
       return;
     case FileAction::Open:
     case FileAction::ImportMvr:
-    case FileAction::SaveAs:
-    case FileAction::AddProfile: askPath(gui, action); return;
+    case FileAction::AddProfile:
+      if (!startDesktopDialog(gui, action)) askPath(gui, action);
+      return;
+    case FileAction::SaveAs: askPath(gui, action); return;
     case FileAction::None: return;
   }
 }
@@ -158,6 +185,21 @@ void saveCurrent(Gui& gui) {
 }
 
 void drawFileDialogs(Gui& gui) {
+  if (gui.dialog.running()) {
+    std::string chosen;
+    switch (gui.dialog.poll(chosen)) {
+      case DesktopDialog::Outcome::Running: break;
+      case DesktopDialog::Outcome::Chosen:
+        gui.pathAction = gui.dialogAction;
+        finishPath(gui, chosen);
+        break;
+      case DesktopDialog::Outcome::Cancelled: gui.say("cancelled"); break;
+      case DesktopDialog::Outcome::Failed:
+        gui.say("the desktop's file dialog gave no answer: type the path");
+        askPath(gui, gui.dialogAction);
+        break;
+    }
+  }
   // The window's close button goes through the guard like Quit does.
   if (glfwWindowShouldClose(gui.window) && !gui.quitConfirmed && gui.doc->modified()) {
     glfwSetWindowShouldClose(gui.window, GLFW_FALSE);

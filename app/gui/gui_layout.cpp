@@ -1,4 +1,4 @@
-// The fixed layout: the show panel on the left, the inspector on the right, the viewport between
+// The fixed layout: the show panel on the left with the command line under it, the inspector on the right, the viewport between
 // them under the menu bar. Fixed, so that panels never cover the stage and tests can click at
 // known places.
 #include <algorithm>
@@ -13,7 +13,10 @@ Layout layoutFor(float widthPx, float heightPx, float menuHeightPx) {
   const float leftW = std::clamp(widthPx * 0.25f, 200.0f, 300.0f);
   const float rightW = std::clamp(widthPx * 0.22f, 190.0f, 280.0f);
   const float h = std::max(heightPx - menuHeightPx, 1.0f);
-  l.left = {0.0f, menuHeightPx, leftW, h};
+  // The field and two lines of its result (an error wraps) under the show panel.
+  const float commandH = std::min(3.0f * menuHeightPx + 12.0f, h * 0.5f);
+  l.left = {0.0f, menuHeightPx, leftW, h - commandH};
+  l.command = {0.0f, menuHeightPx + h - commandH, leftW, commandH};
   l.right = {std::max(widthPx - rightW, leftW), menuHeightPx, rightW, h};
   l.viewport = {leftW, menuHeightPx, std::max(l.right.x - leftW, 1.0f), h};
   return l;

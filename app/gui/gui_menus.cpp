@@ -98,6 +98,7 @@ void handleShortcuts(Gui& gui) {
       case GLFW_KEY_P: startPlacing(gui); break;
       case GLFW_KEY_F: startFocus(gui); break;
       case GLFW_KEY_DELETE: deleteSelection(gui); break;
+      case GLFW_KEY_L: gui.focusCommand = true; break;
       case GLFW_KEY_F1: gui.showHelp = !gui.showHelp; break;
       case GLFW_KEY_ESCAPE:
         if (gui.tool != Tool::Select) gui.tool = Tool::Select;

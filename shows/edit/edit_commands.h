@@ -28,6 +28,10 @@ Result<int> nextFreeAddress(const Show& show, const ProfileSet& profiles, int un
 
 // --- Fixtures. ---
 
+// Adds a profile to the show's library under a new key (ShowDocument::addProfileFile reads the
+// file first; the document keeps its loaded profiles in step with Show::profiles).
+std::unique_ptr<EditCommand> addProfile(std::string key, ProfileRef ref);
+
 struct FixturePlacement {
   std::string profile;  // key of Show::profiles (and of the ProfileSet)
   std::string mode;     // "" = the profile's first mode

@@ -70,6 +70,24 @@ Result<int> nextFreeAddress(const Show& show, const ProfileSet& profiles, int un
 
 namespace {
 
+class AddProfile final : public EditCommand {
+ public:
+  AddProfile(std::string key, ProfileRef ref) : key_(std::move(key)), ref_(std::move(ref)) {}
+  std::string label() const override { return "Add profile " + key_; }
+  Status apply(EditTarget& t) override {
+    if (key_.empty()) return userError("library", "a profile needs a key");
+    if (t.show.profiles.count(key_)) return userError("library", "the show already has a profile \"" + key_ + "\"");
+    t.show.profiles[key_] = ref_;
+    return Ok{};
+  }
+  // Only right after apply or redo, so no fixture placed later uses it any more.
+  void undo(EditTarget& t) override { t.show.profiles.erase(key_); }
+
+ private:
+  std::string key_;
+  ProfileRef ref_;
+};
+
 class PlaceFixture final : public EditCommand {
  public:
   explicit PlaceFixture(FixturePlacement p) : p_(std::move(p)) {}
@@ -288,6 +306,7 @@ class PatchFixture final : public EditCommand {
 
 }  // namespace
 
+std::unique_ptr<EditCommand> addProfile(std::string key, ProfileRef ref) { return std::make_unique<AddProfile>(std::move(key), std::move(ref)); }
 std::unique_ptr<EditCommand> placeFixture(FixturePlacement placement) { return std::make_unique<PlaceFixture>(std::move(placement)); }
 std::unique_ptr<EditCommand> deleteFixtures(std::vector<int> ids) { return std::make_unique<DeleteFixtures>(std::move(ids)); }
 std::unique_ptr<EditCommand> moveFixture(int id, glm::vec3 positionM) {

@@ -20,6 +20,7 @@ Result<std::unique_ptr<ShowDocument>> ShowDocument::open(const fs::path& file) {
   auto profiles = loadProfiles(d->show_);
   if (!profiles) return profiles.error();
   d->profiles_ = std::move(*profiles);
+  d->loaded_ = d->profiles_;
   if (!d->show_.venueGltf.empty()) {
     auto venue = loadVenue(d->show_.resolve(d->show_.venueGltf));
     if (!venue) return venue.error();
@@ -69,6 +70,10 @@ bool sameCues(const std::vector<CueList>& a, const std::vector<CueList>& b) {
 
 void ShowDocument::changed() {
   ++revision_;
+  // The library follows the show's profile keys (adding a profile is undone and redone there).
+  std::erase_if(profiles_, [&](const auto& p) { return !show_.profiles.count(p.first); });
+  for (const auto& [key, ref] : show_.profiles)
+    if (!profiles_.count(key) && loaded_.count(key)) profiles_[key] = loaded_.at(key);
   // Fixtures that no longer exist leave the selection.
   std::erase_if(selection, [&](int id) { return show_.findFixture(id) == nullptr; });
   // The player holds references into the cue lists and snapshots of their states.
@@ -106,17 +111,22 @@ Result<std::string> ShowDocument::addProfileFile(const fs::path& file) {
   for (char c : stem) base += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '-';
   if (base.empty()) base = "profile";
   std::string key = base;
-  for (int n = 2; show_.profiles.count(key) || profiles_.count(key); ++n) key = base + "-" + std::to_string(n);
+  for (int n = 2; show_.profiles.count(key); ++n) key = base + "-" + std::to_string(n);
   std::error_code ec;
   const fs::path abs = fs::absolute(file, ec).lexically_normal();
   ProfileRef ref;
   ref.path = untitled() ? abs.string()
                         : abs.lexically_relative(fs::absolute(show_.file, ec).parent_path().lexically_normal()).string();
   if (ref.path.empty()) ref.path = abs.string();
-  show_.profiles[key] = ref;
-  profiles_[key] = *profile;
-  libraryChanged_ = true;
-  ++revision_;
+  const auto before = loaded_.find(key);
+  const std::shared_ptr<const Profile> kept = before == loaded_.end() ? nullptr : before->second;
+  loaded_[key] = *profile;
+  Status s = run(addProfile(key, ref));
+  if (!s) {
+    if (kept) loaded_[key] = kept;
+    else loaded_.erase(key);
+    return s.error();
+  }
   return key;
 }
 
@@ -189,7 +199,6 @@ Status ShowDocument::save(const fs::path& file, bool force) {
   Status s = saveShow(show_, to, SaveOptions{.force = force});
   if (!s) return s;
   history_.markSaved();
-  libraryChanged_ = false;
   ++revision_;
   return s;
 }

@@ -48,8 +48,8 @@ class ShowDocument {
   // Changes on every edit, undo and redo: the view redraws and refines again when it moves.
   std::uint64_t revision() const { return revision_; }
   bool untitled() const { return show_.file.empty(); }
-  // Unsaved changes: edits since the last save, or profiles added to the library since then.
-  bool modified() const { return history_.modified() || libraryChanged_; }
+  // Unsaved changes: edits (adding a profile is one) since the last save.
+  bool modified() const { return history_.modified(); }
   std::string title() const;  // "haze - demo.haze.json *"
 
   // --- Edits (each one undo step; merge = part of a drag that continues the newest step). ---
@@ -58,7 +58,8 @@ class ShowDocument {
   bool redo();
 
   // Adds a profile file (native .json, .ies, .ldt, .gdtf) to the show's library under a key made
-  // from its file name; returns the key. The file is referred to relative to the show.
+  // from its file name; returns the key. The file is referred to relative to the show. One undo
+  // step (Add profile KEY).
   Result<std::string> addProfileFile(const std::filesystem::path& file);
   // Places a fixture of `profileKey` at a mounting pose and selects it; returns its id.
   Result<int> placeFixtureAt(const std::string& profileKey, const MountPose& pose);
@@ -117,7 +118,9 @@ class ShowDocument {
   std::unique_ptr<Bvh> bvh_;
   Programmer programmer_;
   EditHistory history_;
-  bool libraryChanged_ = false;
+  // Every profile read in this session by key, so that undo and redo of adding one only need to
+  // keep profiles_ to the keys of show_.profiles (changed()).
+  ProfileSet loaded_;
   std::uint64_t revision_ = 1;
 
   std::unique_ptr<Playbacks> playbacks_;

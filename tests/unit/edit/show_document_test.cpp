@@ -274,6 +274,33 @@ TEST(ShowDocument, ProfilesFromFilesJoinTheLibrary) {
   EXPECT_EQ(doc.profiles().size(), n);
 }
 
+TEST(ShowDocument, AddingAProfileIsOneUndoStep) {
+  auto opened = ShowDocument::open(kDemo);
+  ASSERT_TRUE(opened);
+  ShowDocument& doc = **opened;
+  const std::string original = showToText(doc.show());
+  const size_t profiles = doc.profiles().size();
+  auto key = doc.addProfileFile(fs::path(HAZE_SHARED_DATA) / "photometry/ies/hydraapi/ies_4.ies");
+  ASSERT_TRUE(key) << key.error().str();
+  EXPECT_EQ(doc.history().undoLabel(), "Add profile " + *key);
+  auto id = doc.placeFixtureAt(*key, MountPose{.positionM = {0.0f, 8.0f, -3.0f}});
+  ASSERT_TRUE(id) << id.error().str();
+  // Undo the placing, then the adding: the library and the show as loaded, nothing unsaved.
+  ASSERT_TRUE(doc.undo());
+  ASSERT_TRUE(doc.undo());
+  EXPECT_FALSE(doc.profiles().count(*key));
+  EXPECT_EQ(doc.profiles().size(), profiles);
+  EXPECT_EQ(showToText(doc.show()), original);
+  EXPECT_FALSE(doc.modified());
+  // Redo both: the profile is back and the fixture of it too.
+  ASSERT_TRUE(doc.redo());
+  ASSERT_TRUE(doc.profiles().count(*key));
+  ASSERT_TRUE(doc.redo());
+  ASSERT_TRUE(doc.show().findFixture(*id));
+  EXPECT_EQ(doc.show().findFixture(*id)->profile, *key);
+  EXPECT_TRUE(doc.modified());
+}
+
 TEST(ShowDocument, NewShowKeepsTheVenueAndNeedsAPathToSave) {
   auto opened = ShowDocument::open(kDemo);
   ASSERT_TRUE(opened);

@@ -1,0 +1,461 @@
+// The command-line grammar of docs/gui.md, "Command line", as a recursive-descent parser over
+// words. The same parser gives tab completion: wherever the words run out it notes what could
+// have come next, so the candidates can never disagree with what the parser accepts.
+#include "shows/edit/command_syntax.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+
+#include "shows/cue_number.h"
+
+namespace haze {
+
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+// An integer word ("12"), no sign.
+std::optional<int> integerWord(const CommandWord& w) {
+  if (w.quoted || w.text.empty() || w.text.size() > 9) return std::nullopt;
+  for (char c : w.text)
+    if (!isDigit(c)) return std::nullopt;
+  return std::atoi(w.text.c_str());
+}
+
+// A decimal number ("-30", "12.5").
+std::optional<double> numberWord(const CommandWord& w) {
+  if (w.quoted || w.text.empty()) return std::nullopt;
+  size_t k = w.text[0] == '-' ? 1 : 0;
+  bool digits = false, dot = false;
+  for (; k < w.text.size(); ++k) {
+    if (isDigit(w.text[k])) digits = true;
+    else if (w.text[k] == '.' && !dot) dot = true;
+    else return std::nullopt;
+  }
+  if (!digits) return std::nullopt;
+  const double v = std::strtod(w.text.c_str(), nullptr);
+  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
+
+// The attributes the command line sets by name, with their unit and range as the show format has
+// them (iris and frost are typed in percent like levels).
+struct AttributeWord {
+  const char* name;
+  std::optional<float> CueValues::*member;
+  double min, max, scale;
+  const char* unit;
+};
+constexpr AttributeWord kAttributes[] = {
+    {"pan", &CueValues::panDeg, -1e6, 1e6, 1.0, "degrees"},
+    {"tilt", &CueValues::tiltDeg, -1e6, 1e6, 1.0, "degrees"},
+    {"zoom", &CueValues::zoomDeg, 0.1, 179.0, 1.0, "degrees"},
+    {"iris", &CueValues::iris, 0.0, 100.0, 0.01, "percent"},
+    {"frost", &CueValues::frost, 0.0, 100.0, 0.01, "percent"},
+};
+
+const AttributeWord* attributeNamed(const std::string& word) {
+  for (const AttributeWord& a : kAttributes)
+    if (word == a.name) return &a;
+  return nullptr;
+}
+
+std::vector<std::string> settingWords() {
+  std::vector<std::string> s = {"@", "palette"};
+  for (const AttributeWord& a : kAttributes) s.push_back(a.name);
+  return s;
+}
+
+std::string quoteIfSpaced(const std::string& name) {
+  return name.find(' ') == std::string::npos ? name : "\"" + name + "\"";
+}
+
+class Parser {
+ public:
+  Parser(const Show& show, const std::vector<CommandWord>& words) : show_(show), w_(words) {}
+
+  Result<ParsedCommand> line() {
+    ParsedCommand c;
+    if (atEnd()) {
+      std::vector<std::string> start = {"group", "record", "update", "cue", "go", "clear"};
+      for (const std::string& s : settingWords()) start.push_back(s);
+      offer(start, "a fixture id");
+      return c;
+    }
+    const std::string kw = word();
+    if (kw == "record" || kw == "update") {
+      ++i_;
+      if (Status s = keyword("cue", "'" + kw + "'"); !s) return s.error();
+      auto n = cueNumber(kw == "update", "'cue'");
+      if (!n) return n.error();
+      c.action = kw == "record" ? ParsedCommand::Action::Record : ParsedCommand::Action::Update;
+      c.cueNumber = *n;
+      if (Status s = end("the cue number"); !s) return s.error();
+      return c;
+    }
+    if (kw == "cue") {
+      ++i_;
+      auto n = cueNumber(true, "'cue'");
+      if (!n) return n.error();
+      c.action = ParsedCommand::Action::GotoCue;
+      c.cueNumber = *n;
+      if (Status s = end("the cue number"); !s) return s.error();
+      return c;
+    }
+    if (kw == "go" || kw == "clear") {
+      ++i_;
+      c.action = kw == "go" ? ParsedCommand::Action::Go : ParsedCommand::Action::Clear;
+      if (Status s = end("'" + kw + "'"); !s) return s.error();
+      return c;
+    }
+    if (kw == "group" || integerWord(w_[i_])) {
+      auto sel = selection();
+      if (!sel) return sel.error();
+      c.selection = std::move(*sel);
+    }
+    if (Status s = settings(c); !s) return s.error();
+    return c;
+  }
+
+  // What could follow when the words ran out (filled only then).
+  std::vector<std::string> offered;
+  std::string hint;
+  bool reachedEnd = false;  // the words ran out where more could follow
+
+ private:
+  bool atEnd() const { return i_ >= w_.size(); }
+  std::string word() const { return w_[i_].quoted ? std::string() : lower(w_[i_].text); }
+  std::string previous() const { return i_ == 0 ? std::string() : "'" + w_[i_ - 1].text + "'"; }
+
+  void offer(const std::vector<std::string>& words, const std::string& what) {
+    if (!atEnd()) return;
+    reachedEnd = true;
+    offered.insert(offered.end(), words.begin(), words.end());
+    if (hint.empty()) hint = what;
+  }
+
+  // "expected WHAT after 'PREV'" at the current word (or at the end of the line).
+  Error expected(const std::string& what, const std::string& after) const {
+    std::string where = after.empty() ? std::string() : " after " + after;
+    if (atEnd()) return Error{"", "end of line", "expected " + what + where};
+    return Error{"", "word " + std::to_string(w_[i_].position), "expected " + what + where + ", not '" + w_[i_].text + "'"};
+  }
+  Error unknown(const std::string& message) const {
+    return Error{"", "word " + std::to_string(w_[i_].position), message};
+  }
+
+  Status keyword(const std::string& kw, const std::string& after) {
+    offer({kw}, "'" + kw + "'");
+    if (atEnd() || word() != kw) return expected("'" + kw + "'", after);
+    ++i_;
+    return Ok{};
+  }
+
+  Status end(const std::string& after) {
+    if (atEnd()) return Ok{};
+    return expected("the end of the line", after);
+  }
+
+  Result<std::string> cueNumber(bool existing, const std::string& after) {
+    std::vector<std::string> numbers;
+    if (existing && !show_.cueLists.empty())
+      for (const Cue& q : show_.cueLists.front().cues) numbers.push_back(q.number);
+    offer(numbers, "a cue number");
+    if (atEnd() || w_[i_].quoted || !isCueNumber(w_[i_].text)) return expected("a cue number", after);
+    return w_[i_++].text;
+  }
+
+  // selection := term (('+' | '-') term)*
+  Result<std::vector<int>> selection() {
+    auto first = term("");
+    if (!first) return first.error();
+    std::vector<int> ids = *first;
+    while (true) {
+      std::vector<std::string> next = {"+", "-"};
+      if (lastTermWasId_) next.insert(next.begin(), "thru");
+      for (const std::string& s : settingWords()) next.push_back(s);
+      offer(next, "");
+      if (atEnd()) break;
+      const std::string op = word();
+      if (op != "+" && op != "-") break;
+      ++i_;
+      auto more = term("'" + op + "'");
+      if (!more) return more.error();
+      if (op == "+") {
+        ids.insert(ids.end(), more->begin(), more->end());
+      } else {
+        std::erase_if(ids, [&](int id) { return std::find(more->begin(), more->end(), id) != more->end(); });
+      }
+    }
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    if (ids.empty()) return Error{"", "selection", "the selection is empty: every fixture it named was taken out again"};
+    return ids;
+  }
+
+  // term := ID ['thru' ID] | 'group' NAME
+  Result<std::vector<int>> term(const std::string& after) {
+    lastTermWasId_ = false;
+    offer({"group"}, "a fixture id");
+    if (atEnd()) return expected("a fixture id or 'group'", after);
+    if (word() == "group") {
+      ++i_;
+      auto g = name("group", "'group'");
+      if (!g) return g.error();
+      return show_.groups[*g].fixtures;
+    }
+    const auto from = integerWord(w_[i_]);
+    if (!from) return expected("a fixture id or 'group'", after);
+    const size_t fromAt = i_++;
+    if (!atEnd() && word() == "thru") {
+      ++i_;
+      offer({}, "a fixture id");
+      if (atEnd() || !integerWord(w_[i_])) return expected("a number", "'thru'");
+      const int to = *integerWord(w_[i_]);
+      const int lo = std::min(*from, to), hi = std::max(*from, to);
+      std::vector<int> ids;
+      for (const FixtureDef& f : show_.fixtures)
+        if (f.id >= lo && f.id <= hi) ids.push_back(f.id);
+      if (ids.empty())
+        return unknown("no fixture has an id from " + std::to_string(lo) + " to " + std::to_string(hi));
+      ++i_;
+      return ids;
+    }
+    lastTermWasId_ = true;
+    if (!show_.findFixture(*from))
+      return Error{"", "word " + std::to_string(w_[fromAt].position), "no fixture has id " + std::to_string(*from)};
+    return std::vector<int>{*from};
+  }
+
+  // A group or palette: a quoted name, the longest run of words that is a name (any case), or
+  // its number in the show's list (from 1). Returns the index.
+  Result<size_t> name(const std::string& what, const std::string& after) {
+    std::vector<std::string> names;
+    if (what == "group")
+      for (const GroupDef& g : show_.groups) names.push_back(g.name);
+    else
+      for (const PaletteDef& p : show_.palettes) names.push_back(p.name);
+    std::vector<std::string> quoted;
+    for (const std::string& n : names) quoted.push_back(quoteIfSpaced(n));
+    offer(quoted, "a " + what + " name or number");
+    if (atEnd()) return expected("a " + what + " name or number", after);
+    for (size_t k = w_.size() - i_; k >= 1; --k) {
+      if (k > 1 && std::any_of(w_.begin() + static_cast<long>(i_), w_.begin() + static_cast<long>(i_ + k),
+                               [](const CommandWord& x) { return x.quoted; }))
+        continue;
+      std::string joined;
+      for (size_t j = i_; j < i_ + k; ++j) joined += (j > i_ ? " " : "") + w_[j].text;
+      for (size_t n = 0; n < names.size(); ++n)
+        if (lower(names[n]) == lower(joined)) {
+          i_ += k;
+          return n;
+        }
+    }
+    if (auto n = integerWord(w_[i_]); n && *n >= 1 && static_cast<size_t>(*n) <= names.size()) {
+      ++i_;
+      return static_cast<size_t>(*n - 1);
+    }
+    std::string known;
+    for (size_t n = 0; n < names.size(); ++n) known += (n ? ", " : "") + quoted[n];
+    if (integerWord(w_[i_]))
+      return unknown("there is no " + what + " " + w_[i_].text + "; the show has " + std::to_string(names.size()) +
+                     (names.empty() ? "" : " (" + known + ")"));
+    return unknown("no " + what + " is named '" + w_[i_].text + "'" +
+                   (names.empty() ? "; the show has none" : "; expected one of " + known));
+  }
+
+  // setting* := ('@' LEVEL | ATTRIBUTE NUMBER | 'palette' NAME)*
+  Status settings(ParsedCommand& c) {
+    bool any = false;
+    while (true) {
+      if (any) offer(settingWords(), "");
+      if (atEnd()) break;
+      const std::string kw = word();
+      if (kw == "@") {
+        ++i_;
+        offer({"full", "out"}, "a level in percent");
+        if (!atEnd() && word() == "full") c.values.intensity = 1.0f;
+        else if (!atEnd() && word() == "out") c.values.intensity = 0.0f;
+        else if (auto v = atEnd() ? std::nullopt : numberWord(w_[i_])) {
+          if (*v < 0.0 || *v > 100.0) return unknown("a level is 0..100 percent, not " + w_[i_].text);
+          c.values.intensity = static_cast<float>(*v / 100.0);
+        } else {
+          return expected("a level (0..100, 'full' or 'out')", "'@'");
+        }
+        ++i_;
+      } else if (const AttributeWord* a = attributeNamed(kw)) {
+        ++i_;
+        offer({}, std::string("a number in ") + a->unit);
+        const auto v = atEnd() ? std::nullopt : numberWord(w_[i_]);
+        if (!v) return expected(std::string("a number (") + a->unit + ")", "'" + kw + "'");
+        if (*v < a->min || *v > a->max)
+          return unknown(std::string(a->name) + " takes " + trim(a->min) + ".." + trim(a->max) + " " + a->unit + ", not " +
+                         w_[i_].text);
+        c.values.*(a->member) = static_cast<float>(*v * a->scale);
+        ++i_;
+      } else if (kw == "palette") {
+        ++i_;
+        auto p = name("palette", "'palette'");
+        if (!p) return p.error();
+        c.palettes.push_back(show_.palettes[*p].name);
+      } else {
+        std::string what = c.selection ? "'+', '-', " : "a fixture id, 'group', ";
+        if (c.selection && lastTermWasId_ && !any) what += "'thru', ";
+        what += "'@', 'palette' or an attribute (pan, tilt, zoom, iris, frost)";
+        if (!c.selection && !any)
+          return unknown("unknown command '" + w_[i_].text + "'; expected " + what +
+                         ", or record, update, cue, go, clear");
+        return expected(what, previous());
+      }
+      any = true;
+    }
+    if (any) c.action = ParsedCommand::Action::Set;
+    return Ok{};
+  }
+
+  static std::string trim(double v) {
+    std::string s = std::to_string(v);
+    while (s.find('.') != std::string::npos && (s.back() == '0' || s.back() == '.')) {
+      const bool dot = s.back() == '.';
+      s.pop_back();
+      if (dot) break;
+    }
+    return s;
+  }
+
+  const Show& show_;
+  const std::vector<CommandWord>& w_;
+  size_t i_ = 0;
+  bool lastTermWasId_ = false;
+};
+
+// Words and, when the line ends inside a quote, where that quote's text started.
+struct Split {
+  std::vector<CommandWord> words;
+  std::vector<size_t> starts;  // offset of each word's first character (its quote for a quoted word)
+  bool openQuote = false;
+};
+
+Split split(const std::string& line) {
+  Split s;
+  size_t k = 0;
+  auto push = [&](std::string text, bool quoted, size_t start) {
+    s.words.push_back(CommandWord{std::move(text), quoted, static_cast<int>(s.words.size()) + 1});
+    s.starts.push_back(start);
+  };
+  while (k < line.size()) {
+    const char c = line[k];
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      ++k;
+    } else if (c == '"') {
+      const size_t close = line.find('"', k + 1);
+      if (close == std::string::npos) {
+        push(line.substr(k + 1), true, k);
+        s.openQuote = true;
+        break;
+      }
+      push(line.substr(k + 1, close - k - 1), true, k);
+      k = close + 1;
+    } else if (c == '@' || c == '+') {
+      push(std::string(1, c), false, k);
+      ++k;
+    } else {
+      const size_t start = k;
+      std::string text;
+      while (k < line.size() && !std::isspace(static_cast<unsigned char>(line[k])) && line[k] != '@' &&
+             line[k] != '+' && line[k] != '"') {
+        // "12-4": a minus between digits is a word of its own (a leading one is a sign).
+        if (line[k] == '-' && !text.empty() && isDigit(text.back()) && k + 1 < line.size() && isDigit(line[k + 1])) break;
+        text += line[k++];
+      }
+      push(text, false, start);
+    }
+  }
+  return s;
+}
+
+// In a selection, "12 -4" means "12 - 4": the sign is split off when the word before it ends a
+// term (a fixture id or a name), which the parser cannot see from the word alone. A negative
+// number after an attribute keeps its sign.
+std::vector<CommandWord> splitSelectionMinus(std::vector<CommandWord> words) {
+  std::vector<CommandWord> out;
+  for (size_t k = 0; k < words.size(); ++k) {
+    const CommandWord& w = words[k];
+    const bool afterAttribute = k > 0 && !words[k - 1].quoted && attributeNamed(lower(words[k - 1].text));
+    if (!w.quoted && w.text.size() > 1 && w.text[0] == '-' && isDigit(w.text[1]) && w.text.find('.') == std::string::npos &&
+        !afterAttribute && k > 0 && lower(words[k - 1].text) != "@") {
+      out.push_back(CommandWord{"-", false, w.position});
+      out.push_back(CommandWord{w.text.substr(1), false, w.position});
+    } else {
+      out.push_back(w);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Result<std::vector<CommandWord>> splitCommandWords(const std::string& line) {
+  Split s = split(line);
+  if (s.openQuote)
+    return Error{"", "word " + std::to_string(s.words.size()), "expected a closing '\"' after the name"};
+  return splitSelectionMinus(std::move(s.words));
+}
+
+Result<ParsedCommand> parseCommand(const std::string& line, const Show& show) {
+  auto words = splitCommandWords(line);
+  if (!words) return words.error();
+  Parser p(show, *words);
+  return p.line();
+}
+
+Completion completeCommand(const std::string& partialLine, const Show& show) {
+  Split s = split(partialLine);
+  const bool partial = !s.words.empty() && (s.openQuote || !std::isspace(static_cast<unsigned char>(partialLine.back())));
+  std::string prefix;
+  if (partial) {
+    prefix = lower(s.words.back().text);
+    s.words.pop_back();
+  }
+  const std::vector<CommandWord> words = splitSelectionMinus(std::move(s.words));
+  Parser p(show, words);
+  Completion c;
+  auto parsed = p.line();
+  if (!parsed && !p.reachedEnd) {
+    c.hint = parsed.error().str();
+    return c;
+  }
+  for (const std::string& w : p.offered) {
+    const std::string bare = lower(w.size() > 1 && w.front() == '"' ? w.substr(1, w.size() - 2) : w);
+    if (bare.rfind(prefix, 0) == 0 && std::find(c.words.begin(), c.words.end(), w) == c.words.end()) c.words.push_back(w);
+  }
+  c.hint = p.hint;
+  return c;
+}
+
+std::string applyCompletion(const std::string& partialLine, const Completion& completion) {
+  if (completion.words.empty()) return partialLine;
+  Split s = split(partialLine);
+  const bool partial = !s.words.empty() && (s.openQuote || !std::isspace(static_cast<unsigned char>(partialLine.back())));
+  const std::string head = partial ? partialLine.substr(0, s.starts.back()) : partialLine;
+  if (completion.words.size() == 1) return head + completion.words.front() + " ";
+  // Several: as far as they agree (in the first one's spelling), if that is longer than typed.
+  std::string common = completion.words.front();
+  for (const std::string& w : completion.words) {
+    size_t n = 0;
+    while (n < common.size() && n < w.size() && std::tolower(static_cast<unsigned char>(common[n])) ==
+                                                    std::tolower(static_cast<unsigned char>(w[n])))
+      ++n;
+    common.resize(n);
+  }
+  const std::string typed = partial ? partialLine.substr(s.starts.back()) : std::string();
+  return common.size() > typed.size() ? head + common : partialLine;
+}
+
+}  // namespace haze

@@ -1,0 +1,62 @@
+// The GUI's console-style command line (docs/gui.md, "Command line"): a line such as
+// "1 thru 12 - 4 @ 50" or "group 2 palette Centre" parsed against a show into a selection and
+// what to do with it, with errors that name the word where something else was expected, and the
+// words that may come next (tab completion). Running a parsed line is in command_run.h.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fixtures/core/result.h"
+#include "shows/show.h"
+
+namespace haze {
+
+struct ParsedCommand {
+  enum class Action {
+    None,    // a selection alone (or an empty line)
+    Set,     // selection (or the current one) with levels, attributes and palettes
+    Record,  // record cue N
+    Update,  // update cue N
+    GotoCue, // cue N
+    Go,
+    Clear,
+  };
+  Action action = Action::None;
+  // The fixtures the line names, sorted; empty when the line names none (Set then uses the
+  // current selection).
+  std::optional<std::vector<int>> selection;
+  // Set: palettes laid first, in the order given, then the levels and attributes over them.
+  std::vector<std::string> palettes;  // palette names as in the show
+  CueValues values;
+  std::string cueNumber;  // Record, Update, GotoCue
+};
+
+// The line split into words: '@' and '+' are words of their own wherever they are written, a '-'
+// between two digits too ("12-4"); "..." quotes a name with spaces. An unterminated quote is an error.
+struct CommandWord {
+  std::string text;
+  bool quoted = false;
+  int position = 0;  // which word of the line as typed, from 1 (what errors name)
+};
+Result<std::vector<CommandWord>> splitCommandWords(const std::string& line);
+
+// Parses a whole line. An error's place is "word N" (counted from 1) and its message says what was
+// expected there ("expected a number after 'thru'").
+Result<ParsedCommand> parseCommand(const std::string& line, const Show& show);
+
+// Tab completion: the words that may follow a partial line. When the line does not end in a
+// space its last word is a prefix the candidates start with (case-insensitive); names with spaces
+// come quoted. `hint` says what is expected when that is not a word from a list ("a fixture id").
+struct Completion {
+  std::vector<std::string> words;
+  std::string hint;
+};
+Completion completeCommand(const std::string& partialLine, const Show& show);
+
+// The line with its last (partial) word replaced by `word` and a space after it: what Tab does
+// when there is exactly one candidate, or the candidates' common prefix (without the space).
+std::string applyCompletion(const std::string& partialLine, const Completion& completion);
+
+}  // namespace haze

@@ -1,0 +1,293 @@
+// The console command line (docs/gui.md, "Console commands"): every line of the doc's three
+// tables is read from docs/gui.md itself and run through runCommandLine on
+// tests/data/shows/console.haze.json; each example must do what this file checks for it (and
+// every example needs a check here, and every check an example there, so the doc and the test
+// cannot drift), each error line must give the doc's message and change nothing, and each
+// completion line must offer exactly the doc's words.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "shows/edit/command_run.h"
+#include "shows/edit/command_syntax.h"
+#include "shows/playback.h"
+#include "shows/show_json.h"
+
+namespace haze {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kShow = fs::path(HAZE_SOURCE_DIR) / "tests/data/shows/console.haze.json";
+
+struct DocRow {
+  std::string typed;
+  std::vector<std::string> said;  // the second column's `quoted` parts
+};
+
+// The rows of the table under "### <title>" in the "## Console commands" section.
+std::vector<DocRow> docTable(const std::string& title) {
+  std::ifstream in(fs::path(HAZE_SOURCE_DIR) / "docs/gui.md");
+  std::string line;
+  bool inSection = false, inTable = false;
+  std::vector<DocRow> rows;
+  const std::regex code("`([^`]*)`");
+  while (std::getline(in, line)) {
+    if (line.rfind("## ", 0) == 0) inSection = line == "## Console commands";
+    if (!inSection) continue;
+    if (line.rfind("### ", 0) == 0) inTable = line == "### " + title;
+    if (!inTable || line.rfind("| `", 0) != 0) continue;
+    const size_t split = line.find("` | ");
+    if (split == std::string::npos) continue;
+    DocRow r;
+    r.typed = line.substr(3, split - 3);
+    const std::string rest = line.substr(split + 4);
+    for (std::sregex_iterator m(rest.begin(), rest.end(), code), e; m != e; ++m) r.said.push_back((*m)[1]);
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+std::unique_ptr<ShowDocument> openShow() {
+  auto d = ShowDocument::open(kShow);
+  EXPECT_TRUE(d.ok()) << (d ? "" : d.error().str());
+  return d ? std::move(*d) : nullptr;
+}
+
+std::optional<float> programmed(const ShowDocument& d, int id, std::optional<float> CueValues::*member) {
+  auto it = d.programmer().values.find(id);
+  return it == d.programmer().values.end() ? std::nullopt : it->second.*member;
+}
+
+std::vector<int> range(int a, int b) {
+  std::vector<int> v;
+  for (int i = a; i <= b; ++i) v.push_back(i);
+  return v;
+}
+
+// Every fixture in `ids` holds `value` for `member` in the programmer, and no other fixture is there.
+void expectProgrammer(const ShowDocument& d, const std::vector<int>& ids, std::optional<float> CueValues::*member,
+                      float value) {
+  EXPECT_EQ(d.programmer().values.size(), ids.size());
+  for (int id : ids) {
+    auto v = programmed(d, id, member);
+    ASSERT_TRUE(v.has_value()) << "fixture " << id;
+    EXPECT_FLOAT_EQ(*v, value) << "fixture " << id;
+  }
+}
+
+struct Example {
+  std::string setup;  // run first (context the line needs)
+  bool undoStep;      // the line is one undo step
+  std::function<void(ShowDocument&)> check;
+};
+
+std::map<std::string, Example> examples() {
+  using V = CueValues;
+  std::map<std::string, Example> e;
+  e["1 thru 12 @ 50"] = {"", true, [](ShowDocument& d) {
+                           EXPECT_EQ(d.selection, range(1, 12));
+                           expectProgrammer(d, range(1, 12), &V::intensity, 0.5f);
+                         }};
+  e["1 + 3 + 5 @ full"] = {"", true, [](ShowDocument& d) { expectProgrammer(d, {1, 3, 5}, &V::intensity, 1.0f); }};
+  e["1 thru 12 - 4 @ out"] = {"", true, [](ShowDocument& d) {
+                                expectProgrammer(d, {1, 2, 3, 5, 6, 7, 8, 9, 10, 11, 12}, &V::intensity, 0.0f);
+                              }};
+  e["1 thru 6 - 2 thru 3"] = {"", false, [](ShowDocument& d) {
+                                EXPECT_EQ(d.selection, (std::vector<int>{1, 4, 5, 6}));
+                                EXPECT_TRUE(d.programmer().values.empty());
+                              }};
+  e["12-4"] = {"", false, [](ShowDocument& d) { EXPECT_EQ(d.selection, std::vector<int>{12}); }};
+  e["group Front @ 80"] = {"", true, [](ShowDocument& d) { expectProgrammer(d, range(1, 6), &V::intensity, 0.8f); }};
+  e["group spots sr pan 45 tilt -30"] = {"", true, [](ShowDocument& d) {
+                                           expectProgrammer(d, range(7, 12), &V::panDeg, 45.0f);
+                                           expectProgrammer(d, range(7, 12), &V::tiltDeg, -30.0f);
+                                           EXPECT_FALSE(programmed(d, 7, &V::intensity));
+                                         }};
+  e["group 2 zoom 20"] = {"", true, [](ShowDocument& d) { expectProgrammer(d, range(7, 12), &V::zoomDeg, 20.0f); }};
+  e["group front + 9 @ 40"] = {"", true, [](ShowDocument& d) {
+                                 expectProgrammer(d, {1, 2, 3, 4, 5, 6, 9}, &V::intensity, 0.4f);
+                               }};
+  e["@ 75"] = {"2 + 4", true, [](ShowDocument& d) { expectProgrammer(d, {2, 4}, &V::intensity, 0.75f); }};
+  e["1 thru 3 palette Centre"] = {"", true, [](ShowDocument& d) {
+                                    expectProgrammer(d, {1, 2, 3}, &V::panDeg, 10.0f);
+                                    expectProgrammer(d, {1, 2, 3}, &V::tiltDeg, 20.0f);
+                                  }};
+  e["group 2 palette 2 @ 60"] = {"", true, [](ShowDocument& d) {
+                                   expectProgrammer(d, range(7, 12), &V::intensity, 0.6f);
+                                   for (int id : range(7, 12)) {
+                                     const CueValues& v = d.programmer().values.at(id);
+                                     ASSERT_TRUE(v.color);
+                                     EXPECT_FLOAT_EQ(v.color->y, 0.8f);
+                                     EXPECT_FLOAT_EQ(v.color->z, 0.6f);
+                                   }
+                                 }};
+  e["1 iris 50 frost 20"] = {"", true, [](ShowDocument& d) {
+                               expectProgrammer(d, {1}, &V::iris, 0.5f);
+                               expectProgrammer(d, {1}, &V::frost, 0.2f);
+                             }};
+  e["record cue 7"] = {"1 @ 30", true, [](ShowDocument& d) {
+                         const CueList& l = *d.cueList();
+                         ASSERT_EQ(l.cues.size(), 4u);
+                         EXPECT_EQ(l.cues[2].number, "7");
+                         ASSERT_EQ(l.cues[2].values.size(), 1u);
+                         EXPECT_FLOAT_EQ(*l.cues[2].values.at(1).intensity, 0.3f);
+                       }};
+  e["update cue 5"] = {"7 @ 90", true, [](ShowDocument& d) {
+                         const Cue& c = d.cueList()->cues[1];
+                         EXPECT_EQ(c.number, "5");
+                         EXPECT_FLOAT_EQ(*c.values.at(7).intensity, 0.9f);
+                       }};
+  e["cue 5"] = {"", false, [](ShowDocument& d) { EXPECT_EQ(d.currentCue(), std::optional<size_t>(1)); }};
+  e["go"] = {"", false, [](ShowDocument& d) { EXPECT_EQ(d.currentCue(), std::optional<size_t>(0)); }};
+  e["clear"] = {"1 @ 50", true, [](ShowDocument& d) {
+                  EXPECT_TRUE(d.programmer().values.empty());
+                  EXPECT_TRUE(d.selection.empty());
+                }};
+  return e;
+}
+
+TEST(CommandLine, EveryDocExampleDoesWhatItSays) {
+  const std::vector<DocRow> rows = docTable("Examples");
+  const auto checks = examples();
+  std::set<std::string> inDoc;
+  for (const DocRow& r : rows) inDoc.insert(r.typed);
+  for (const auto& [line, ex] : checks) EXPECT_TRUE(inDoc.count(line)) << "not in docs/gui.md: " << line;
+  for (const DocRow& r : rows) {
+    SCOPED_TRACE(r.typed);
+    auto it = checks.find(r.typed);
+    ASSERT_NE(it, checks.end()) << "docs/gui.md example without a check here";
+    auto d = openShow();
+    ASSERT_TRUE(d);
+    if (!it->second.setup.empty()) {
+      ASSERT_TRUE(runCommandLine(*d, it->second.setup, 0.0).ok());
+    }
+    const Programmer before = d->programmer();
+    const std::string showBefore = showToText(d->show());
+    const size_t steps = d->history().undoSteps();
+    auto said = runCommandLine(*d, r.typed, 1.0);
+    ASSERT_TRUE(said.ok()) << said.error().str();
+    EXPECT_FALSE(said->empty());
+    it->second.check(*d);
+    EXPECT_EQ(d->history().undoSteps(), steps + (it->second.undoStep ? 1 : 0));
+    if (it->second.undoStep) {
+      EXPECT_EQ(d->history().undoLabel(), "Command \"" + r.typed + "\"");
+      ASSERT_TRUE(d->undo());
+      EXPECT_EQ(d->programmer(), before);
+      EXPECT_EQ(showToText(d->show()), showBefore);
+      ASSERT_TRUE(d->redo());
+      it->second.check(*d);
+    }
+  }
+  EXPECT_EQ(rows.size(), checks.size());
+}
+
+TEST(CommandLine, EveryDocErrorSaysWhatWasExpectedAndChangesNothing) {
+  const std::vector<DocRow> rows = docTable("Errors");
+  ASSERT_GE(rows.size(), 10u);
+  for (const DocRow& r : rows) {
+    SCOPED_TRACE(r.typed);
+    ASSERT_EQ(r.said.size(), 1u);
+    auto d = openShow();
+    ASSERT_TRUE(d);
+    // Something selected and programmed first, so "nothing changed" covers both.
+    ASSERT_TRUE(runCommandLine(*d, "5 + 6 @ 20", 0.0).ok());
+    const Programmer before = d->programmer();
+    const std::vector<int> selected = d->selection;
+    const std::string showBefore = showToText(d->show());
+    const size_t steps = d->history().undoSteps();
+    const auto cue = d->currentCue();
+    auto said = runCommandLine(*d, r.typed, 1.0);
+    ASSERT_FALSE(said.ok());
+    EXPECT_EQ(said.error().str(), r.said[0]);
+    EXPECT_EQ(d->programmer(), before);
+    EXPECT_EQ(d->selection, selected);
+    EXPECT_EQ(showToText(d->show()), showBefore);
+    EXPECT_EQ(d->history().undoSteps(), steps);
+    EXPECT_EQ(d->currentCue(), cue);
+  }
+}
+
+TEST(CommandLine, EveryDocCompletionOffersExactlyItsWords) {
+  const std::vector<DocRow> rows = docTable("Completion");
+  ASSERT_GE(rows.size(), 6u);
+  auto d = openShow();
+  ASSERT_TRUE(d);
+  for (const DocRow& r : rows) {
+    SCOPED_TRACE("'" + r.typed + "'");
+    EXPECT_EQ(completeCommand(r.typed, d->show()).words, r.said);
+  }
+}
+
+TEST(CommandLine, TabCompletesOneCandidateAndTheCommonPrefixOfSeveral) {
+  auto d = openShow();
+  ASSERT_TRUE(d);
+  const Show& s = d->show();
+  EXPECT_EQ(applyCompletion("gr", completeCommand("gr", s)), "group ");
+  EXPECT_EQ(applyCompletion("group sp", completeCommand("group sp", s)), "group \"Spots SR\" ");
+  EXPECT_EQ(applyCompletion("1@f", completeCommand("1@f", s)), "1@full ");
+  EXPECT_EQ(applyCompletion("re", completeCommand("re", s)), "record ");
+  // Several candidates: as far as they agree.
+  EXPECT_EQ(completeCommand("1 t", s).words, (std::vector<std::string>{"thru", "tilt"}));
+  EXPECT_EQ(applyCompletion("1 t", completeCommand("1 t", s)), "1 t");
+  EXPECT_EQ(applyCompletion("1 thru 3 palette ", completeCommand("1 thru 3 palette ", s)), "1 thru 3 palette ");
+  // A completed line parses.
+  const std::string done = applyCompletion("group sp", completeCommand("group sp", s)) + "@ 50";
+  EXPECT_TRUE(parseCommand(done, s).ok());
+  // Nothing offered after a word that needs a number; the hint says what.
+  const Completion afterThru = completeCommand("1 thru ", s);
+  EXPECT_TRUE(afterThru.words.empty());
+  EXPECT_EQ(afterThru.hint, "a fixture id");
+  // After an error: nothing, and the error as the hint.
+  const Completion bad = completeCommand("13 @ ", s);
+  EXPECT_TRUE(bad.words.empty());
+  EXPECT_EQ(bad.hint, "word 1: no fixture has id 13");
+}
+
+TEST(CommandLine, SplitsWordsAsDocumented) {
+  auto words = [](const std::string& line) {
+    std::vector<std::string> out;
+    auto w = splitCommandWords(line);
+    EXPECT_TRUE(w.ok());
+    if (w)
+      for (const CommandWord& x : *w) out.push_back(x.text);
+    return out;
+  };
+  EXPECT_EQ(words("1+3@50"), (std::vector<std::string>{"1", "+", "3", "@", "50"}));
+  EXPECT_EQ(words("1 thru 12 -4"), (std::vector<std::string>{"1", "thru", "12", "-", "4"}));
+  EXPECT_EQ(words("1 tilt -30"), (std::vector<std::string>{"1", "tilt", "-30"}));
+  EXPECT_EQ(words("group \"Spots SR\" @ 5"), (std::vector<std::string>{"group", "Spots SR", "@", "5"}));
+}
+
+TEST(CommandLine, SelectionAloneAndSettingsOnTheCurrentSelection) {
+  auto d = openShow();
+  ASSERT_TRUE(d);
+  ASSERT_TRUE(runCommandLine(*d, "3 thru 1", 0.0).ok());  // either order
+  EXPECT_EQ(d->selection, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(d->history().undoSteps(), 0u);
+  ASSERT_TRUE(runCommandLine(*d, "pan 45 @ 10", 0.0).ok());
+  expectProgrammer(*d, {1, 2, 3}, &CueValues::panDeg, 45.0f);
+  EXPECT_EQ(d->history().undoSteps(), 1u);
+  // A later setting wins over a palette written before it.
+  ASSERT_TRUE(runCommandLine(*d, "1 palette Centre pan 5", 0.0).ok());
+  EXPECT_FLOAT_EQ(*programmed(*d, 1, &CueValues::panDeg), 5.0f);
+  EXPECT_FLOAT_EQ(*programmed(*d, 1, &CueValues::tiltDeg), 20.0f);
+  // Nothing selected: a setting says so.
+  ASSERT_TRUE(runCommandLine(*d, "clear", 0.0).ok());
+  auto none = runCommandLine(*d, "@ 50", 0.0);
+  ASSERT_FALSE(none.ok());
+  EXPECT_NE(none.error().message.find("no fixture is selected"), std::string::npos);
+  // Update with an empty programmer is refused rather than an empty undo step.
+  auto empty = runCommandLine(*d, "update cue 5", 0.0);
+  ASSERT_FALSE(empty.ok());
+  EXPECT_EQ(describeIds({1, 2, 3, 5, 7, 8, 9}), "1-3, 5, 7-9");
+}
+
+}  // namespace
+}  // namespace haze
