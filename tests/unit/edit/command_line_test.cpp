@@ -14,6 +14,8 @@
 #include <set>
 #include <sstream>
 
+#include <glm/glm.hpp>
+
 #include "shows/edit/command_run.h"
 #include "shows/edit/command_syntax.h"
 #include "shows/playback.h"
@@ -263,6 +265,39 @@ TEST(CommandLine, SplitsWordsAsDocumented) {
   EXPECT_EQ(words("1 thru 12 -4"), (std::vector<std::string>{"1", "thru", "12", "-", "4"}));
   EXPECT_EQ(words("1 tilt -30"), (std::vector<std::string>{"1", "tilt", "-30"}));
   EXPECT_EQ(words("group \"Spots SR\" @ 5"), (std::vector<std::string>{"group", "Spots SR", "@", "5"}));
+}
+
+// The demo's lines in docs/gui.md ("On the demo"), in their order, on the bundled demo show:
+// its groups and palettes from the command line, recorded into a new cue.
+TEST(CommandLine, TheDemoLinesInTheDocDoWhatTheySay) {
+  const std::vector<DocRow> rows = docTable("On the demo");
+  ASSERT_EQ(rows.size(), 3u);
+  auto opened = ShowDocument::open(fs::path(HAZE_SOURCE_DIR) / "examples/demo/demo.haze.json");
+  ASSERT_TRUE(opened.ok()) << opened.error().str();
+  ShowDocument& d = **opened;
+  for (const DocRow& r : rows) ASSERT_TRUE(runCommandLine(d, r.typed, 0.0).ok()) << r.typed;
+  const CueList& list = *d.cueList();
+  ASSERT_EQ(list.cues.back().number, "6");
+  EXPECT_EQ(list.cues.back().values.size(), 8u);
+  // Record keeps what differs from tracking; the look on stage at cue 6 is what the lines said.
+  const StageState stage = trackedState(d.show(), d.profiles(), list, list.cues.size() - 1);
+  auto near = [](const glm::vec3& a, const glm::vec3& b) { return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(1e-6f))); };
+  for (int id : {201, 202, 203, 204}) {
+    EXPECT_FLOAT_EQ(stage.at(id).intensity, 0.5f) << id;
+    EXPECT_TRUE(near(stage.at(id).color, glm::vec3(1.0f, 0.78f, 0.52f))) << id;
+  }
+  // The crossed-over aim of cue 4.5, beam by beam.
+  const std::map<int, std::pair<float, float>> aim{{301, {-11.7f, 52.1f}}, {302, {15.2f, 59.8f}},
+                                                   {303, {-15.2f, 59.8f}}, {304, {11.7f, 52.1f}}};
+  for (const auto& [id, pt] : aim) {
+    const Attributes& a = stage.at(id);
+    EXPECT_FLOAT_EQ(a.intensity, 1.0f) << id;
+    EXPECT_TRUE(near(a.color, glm::vec3(1.0f, 0.55f, 0.1f))) << id;
+    EXPECT_FLOAT_EQ(a.panDeg, pt.first) << id;
+    EXPECT_FLOAT_EQ(a.tiltDeg, pt.second) << id;
+  }
+  // The spots stay out, as at the bows.
+  for (int id : {101, 102, 103, 104}) EXPECT_EQ(stage.at(id).intensity, 0.0f) << id;
 }
 
 TEST(CommandLine, SelectionAloneAndSettingsOnTheCurrentSelection) {
