@@ -16,9 +16,8 @@ python3 "$root/tests/show_copy.py" "$root/examples/demo/air.haze.json" "$show"
 base() { python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["atmosphere"]["density"]["base"])' "$show"; }
 check "the copy starts at base density 0.25 ($(base))" '[ "$(base)" = 0.25 ]'
 
-start_haze "haze - air" "$show" --width 640 --height 360 --quality draft --exposure-mode manual
+start_haze "haze - air" "$show" --width 640 --height 360 --quality draft --exposure-mode manual --tab air
 view=250x341+200+19        # the viewport between the panels at 640x360
-click 177 36               # the Air tab
 shot fog
 click 16 168               # "Density field": off
 away() { xdotool mousemove --window "$win" 540 330; settle; }  # no tooltip over the viewport
