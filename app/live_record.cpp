@@ -10,28 +10,6 @@
 
 namespace haze {
 
-namespace {
-CueValues everything(const Attributes& a) {
-  CueValues v;
-  v.intensity = a.intensity;
-  v.panDeg = a.panDeg;
-  v.tiltDeg = a.tiltDeg;
-  v.color = a.color;
-  v.zoomDeg = a.zoomDeg;
-  v.gobo = a.gobo;
-  v.goboRotationDeg = a.goboRotationDeg;
-  v.iris = a.iris;
-  v.frost = a.frost;
-  v.prism = a.prism;
-  v.prismRotationDeg = a.prismRotationDeg;
-  v.blades = a.blades;
-  v.bladeRotationDeg = a.bladeRotationDeg;
-  v.shutter = a.shutter;
-  for (size_t k = 0; k < a.cells.size(); ++k)
-    v.cells[static_cast<int>(k)] = CellValues{a.cells[k].intensity, a.cells[k].color};
-  return v;
-}
-}  // namespace
 
 Result<std::string> recordLiveCue(Show& show, const ProfileSet& profiles, const StageState& stage,
                                   const std::set<int>& fixtures, const LiveRecord& r) {
@@ -40,7 +18,7 @@ Result<std::string> recordLiveCue(Show& show, const ProfileSet& profiles, const 
   if (show.file.empty()) return Error{"", "--record-cue", "the show has no file to save to"};
   Programmer programmer;
   for (int id : fixtures)
-    if (auto it = stage.find(id); it != stage.end()) programmer.values[id] = everything(it->second);
+    if (auto it = stage.find(id); it != stage.end()) programmer.values[id] = cueValuesOf(it->second);
   const CueList* list = nullptr;
   for (const CueList& l : show.cueLists)
     if (r.list.empty() ? true : l.name == r.list) {

@@ -273,6 +273,27 @@ StageState stateAt(const Show& show, const ProfileSet& profiles, const CueList& 
   return blendStatesAt(show, profiles, from, to, list.cues[cueIndex], secondsSinceGo);
 }
 
+CueValues cueValuesOf(const Attributes& a) {
+  CueValues v;
+  v.intensity = a.intensity;
+  v.panDeg = a.panDeg;
+  v.tiltDeg = a.tiltDeg;
+  v.color = a.color;
+  v.zoomDeg = a.zoomDeg;
+  v.gobo = a.gobo;
+  v.goboRotationDeg = a.goboRotationDeg;
+  v.iris = a.iris;
+  v.frost = a.frost;
+  v.prism = a.prism;
+  v.prismRotationDeg = a.prismRotationDeg;
+  v.blades = a.blades;
+  v.bladeRotationDeg = a.bladeRotationDeg;
+  v.shutter = a.shutter;
+  for (size_t k = 0; k < a.cells.size(); ++k)
+    v.cells[static_cast<int>(k)] = CellValues{a.cells[k].intensity, a.cells[k].color};
+  return v;
+}
+
 Result<size_t> findCue(const CueList& list, const std::string& number) {
   if (isCueNumber(number))
     for (size_t i = 0; i < list.cues.size(); ++i)

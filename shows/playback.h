@@ -25,6 +25,8 @@ StageState stateAt(const Show& show, const ProfileSet& profiles, const CueList& 
                    size_t cueIndex, double secondsSinceGo);
 // Index of the cue with this number ("1", "1.5"; "1.50" finds "1.5"), or an error naming the list.
 Result<size_t> findCue(const CueList& list, const std::string& number);
+// Every attribute of a fixture's state as cue values (recording a look seen on stage).
+CueValues cueValuesOf(const Attributes& a);
 
 // --- The pieces both faces share. ---
 

@@ -185,6 +185,7 @@ void handleViewport(Gui& gui);  // mouse in the viewport, then the overlay
 void requestFileAction(Gui& gui, FileAction action, std::string path = "");
 void saveCurrent(Gui& gui);
 void recordCueFromProgrammer(Gui& gui);  // gui_cues.cpp
+void recordDmxLook(Gui& gui);            // gui_cues.cpp: live, the look DMX puts on stage
 void updateCursorCue(Gui& gui);          // gui_cues.cpp
 
 }  // namespace haze

@@ -2,8 +2,11 @@
 // picks one for editing, double-click GOTOs it), Record / Update / Delete, and the picked cue's
 // number, label, fade, delay and follow. Every change is a command (undo).
 #include <cstdio>
+#include <map>
+#include <set>
 
 #include "app/gui/gui.h"
+#include "shows/dmx/udp_receiver.h"
 
 namespace haze {
 
@@ -25,6 +28,32 @@ void recordCueFromProgrammer(Gui& gui) {
   }
   if (auto at = findCue(*gui.doc->cueList(), *number)) gui.cueCursor = *at;
   gui.say("recorded cue " + *number + " (only what changed); C clears the programmer");
+}
+
+void recordDmxLook(Gui& gui) {
+  if (!gui.live) {
+    gui.say("Record DMX records what a console sends: open the show with --sacn or --artnet", true);
+    return;
+  }
+  // As `haze live --record-cue`: only fixtures DMX drove, so a universe the console does not
+  // send cannot wipe the tracked look; the commanded state, not where the heads have got to.
+  const std::set<int> fixtures = gui.live->input().dmxFixtures();
+  if (fixtures.empty()) {
+    gui.say("no fixture has received DMX yet: nothing recorded", true);
+    return;
+  }
+  const StageState& stage = gui.live->poll(0);
+  std::map<int, CueValues> look;
+  for (int id : fixtures)
+    if (auto it = stage.find(id); it != stage.end()) look[id] = cueValuesOf(it->second);
+  auto number = gui.doc->recordLook(std::move(look), "from DMX");
+  if (!number) {
+    gui.say(number.error().str(), true);
+    return;
+  }
+  if (auto at = findCue(*gui.doc->cueList(), *number)) gui.cueCursor = *at;
+  gui.say("recorded cue " + *number + " from the DMX of " + std::to_string(fixtures.size()) +
+          " fixtures (only what changed)");
 }
 
 void updateCursorCue(Gui& gui) {
@@ -78,6 +107,11 @@ void drawCuesTab(Gui& gui) {
 
   if (ImGui::Button("Record")) recordCueFromProgrammer(gui);
   ImGui::SameLine();
+  if (gui.live) {
+    if (ImGui::Button("Rec DMX")) recordDmxLook(gui);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Record what the console sends as a new cue (Ctrl+Shift+R)");
+    ImGui::SameLine();
+  }
   const bool picked = list && gui.cueCursor && *gui.cueCursor < list->cues.size();
   if (!picked) ImGui::BeginDisabled();
   if (ImGui::Button("Update")) updateCursorCue(gui);

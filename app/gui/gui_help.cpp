@@ -11,6 +11,7 @@ constexpr const char* kShortcuts[][2] = {
     {"Backspace", "BACK: the previous cue"},
     {"G", "GOTO the cue picked in the cue list"},
     {"Ctrl+R", "Record the programmer into a new cue at the end"},
+    {"Ctrl+Shift+R", "Live: record what DMX puts on stage into a new cue at the end"},
     {"Ctrl+U", "Update the picked cue with the programmer"},
     {"C", "Clear the programmer"},
     {"P", "Place a fixture of the library's profile: click a surface"},

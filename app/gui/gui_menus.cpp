@@ -71,7 +71,7 @@ void handleShortcuts(Gui& gui) {
         case GLFW_KEY_Z: shift ? redo(gui) : undo(gui); break;
         case GLFW_KEY_Y: redo(gui); break;
         case GLFW_KEY_A: selectAll(gui); break;
-        case GLFW_KEY_R: recordCueFromProgrammer(gui); break;
+        case GLFW_KEY_R: shift ? recordDmxLook(gui) : recordCueFromProgrammer(gui); break;
         case GLFW_KEY_U: updateCursorCue(gui); break;
         case GLFW_KEY_S: shift ? requestFileAction(gui, FileAction::SaveAs) : saveCurrent(gui); break;
         case GLFW_KEY_O: requestFileAction(gui, FileAction::Open); break;

@@ -72,6 +72,9 @@ struct CueRecord {
 // it (or from the defaults at the start): tracking, so the cue stores only what changes. The
 // programmer keeps its values (clear it with clearProgrammer).
 std::unique_ptr<EditCommand> recordCue(CueRecord record);
+// The same from `look` (fixture id -> its values, e.g. what DMX put on stage) instead of the
+// programmer, which stays as it is.
+std::unique_ptr<EditCommand> recordLook(CueRecord record, std::map<int, CueValues> look);
 // Folds the programmer into an existing cue: a value equal to the tracked state before the cue is
 // dropped from it (the cue then tracks it, with the same look), any other value is set.
 std::unique_ptr<EditCommand> updateCue(std::string list, std::string number);

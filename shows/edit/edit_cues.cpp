@@ -293,6 +293,33 @@ class RenumberCue final : public EditCommand {
 }  // namespace
 
 std::unique_ptr<EditCommand> recordCue(CueRecord record) { return std::make_unique<RecordCue>(std::move(record)); }
+
+namespace {
+// RecordCue run against a programmer of its own: one rule for what a new cue keeps.
+class RecordLook final : public EditCommand {
+ public:
+  RecordLook(CueRecord record, std::map<int, CueValues> look) : inner_(std::move(record)) {
+    look_.values = std::move(look);
+  }
+  std::string label() const override { return inner_.label() + " from the live look"; }
+  Status apply(EditTarget& t) override {
+    EditTarget own{t.show, look_, t.profiles};
+    return inner_.apply(own);
+  }
+  void undo(EditTarget& t) override {
+    EditTarget own{t.show, look_, t.profiles};
+    inner_.undo(own);
+  }
+
+ private:
+  RecordCue inner_;
+  Programmer look_;
+};
+}  // namespace
+
+std::unique_ptr<EditCommand> recordLook(CueRecord record, std::map<int, CueValues> look) {
+  return std::make_unique<RecordLook>(std::move(record), std::move(look));
+}
 std::unique_ptr<EditCommand> updateCue(std::string list, std::string number) {
   return std::make_unique<UpdateCue>(std::move(list), std::move(number));
 }

@@ -193,6 +193,21 @@ Result<std::string> ShowDocument::recordCue(const std::string& afterNumber, cons
   return at ? list->cues[*at + 1].number : list->cues.back().number;
 }
 
+Result<std::string> ShowDocument::recordLook(std::map<int, CueValues> look, const std::string& label) {
+  if (look.empty()) return Error{"", "record", "no fixture in the look: nothing to record"};
+  CueRecord r;
+  const CueList* list = cueList();
+  r.list = list ? list->name : "";
+  if (list && !list->cues.empty()) r.after = list->cues.back().number;
+  r.label = label;
+  const size_t before = list ? list->cues.size() : 0;
+  Status s = run(haze::recordLook(std::move(r), std::move(look)));
+  if (!s) return s.error();
+  list = cueList();
+  if (!list || list->cues.size() != before + 1) return Error{"", "record", "the cue list did not grow"};
+  return list->cues.back().number;
+}
+
 Status ShowDocument::save(const fs::path& file, bool force) {
   const fs::path to = file.empty() ? show_.file : file;
   if (to.empty()) return Error{"", "save", "the show has no file yet: use Save as and give a path ending in .haze.json"};

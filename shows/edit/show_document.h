@@ -73,6 +73,9 @@ class ShowDocument {
   // Records the programmer into a new cue of the first list after cue `afterNumber` ("" = at the
   // end) and returns its number.
   Result<std::string> recordCue(const std::string& afterNumber = "", const std::string& label = "");
+  // The same from a look (fixture id -> values, e.g. what DMX put on stage) instead of the
+  // programmer: a new cue at the end of the list, one undo step.
+  Result<std::string> recordLook(std::map<int, CueValues> look, const std::string& label = "");
 
   // Saves to `file` ("" = where it was loaded from) through the shows library's safe save.
   Status save(const std::filesystem::path& file = {}, bool force = false);

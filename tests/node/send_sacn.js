@@ -6,7 +6,8 @@
 //   script prints "ready" so a test knows levels have arrived. BAD_PACKETS datagrams with an
 //   out-of-range priority (250) are sent once at the start, for the malformed counters.
 //   With "multicast" the streams go to their groups 239.255.hi.lo through the loopback
-//   interface instead of unicast to 127.0.0.1.
+//   interface instead of unicast to 127.0.0.1. SACN_HOST=ADDR unicasts to another loopback
+//   address (a GUI test's haze on --bind ADDR, port 5568).
 'use strict';
 const dgram = require('dgram');
 const { Sender, Packet } = require('sacn');
@@ -19,6 +20,7 @@ if (!port || !roundsArg || !streamsJson) {
 }
 const streams = JSON.parse(streamsJson);
 const bad = Number(badArg || 0);
+const host = process.env.SACN_HOST || '127.0.0.1';
 
 const senders = streams.map((s) => {
   const cid = Buffer.alloc(16, s.cid || 1);
@@ -26,7 +28,7 @@ const senders = streams.map((s) => {
     sender: new Sender({
       universe: s.universe,
       port: Number(port),
-      useUnicastDestination: multicast ? undefined : '127.0.0.1',
+      useUnicastDestination: multicast ? undefined : host,
       defaultPacketOptions: { cid, sourceName: s.name || 'haze test', priority: s.priority || 100,
                               useRawDmxValues: true },
     }),
@@ -48,7 +50,7 @@ async function main() {
     buffer[108] = 250;  // E1.31 priorities stop at 200
     for (let i = 0; i < bad; ++i) {
       await new Promise((resolve, reject) =>
-        socket.send(buffer, Number(port), '127.0.0.1', (e) => (e ? reject(e) : resolve())));
+        socket.send(buffer, Number(port), host, (e) => (e ? reject(e) : resolve())));
     }
     socket.close();
   }
