@@ -21,7 +21,7 @@ void merge(CueValues& into, const CueValues& v) {
 }  // namespace
 
 LivePlayback::LivePlayback(const Show& show, const ProfileSet& profiles, const CueList* list)
-    : show_(show), profiles_(profiles), list_(list), playbacks_(show, profiles) {
+    : show_(show), list_(list), playbacks_(show, profiles) {
   if (!list_) return;
   // Cue list names are unique in a show (loadShow refuses repeats).
   const auto i = playbacks_.find(list_->name);

@@ -48,7 +48,6 @@ class LivePlayback {
   std::string chase(const Timecode& time, double nowS);
 
   const Show& show_;
-  const ProfileSet& profiles_;
   const CueList* list_;
   Playbacks playbacks_;
   size_t main_ = 0;  // list_'s playback
