@@ -6,11 +6,15 @@
 # connections while it does. The tests' xdotool calls are short-lived clients, so without it a
 # haze starting while an xdotool call closed failed with "X11: Failed to open display" (the GUI
 # tests' intermittent failure: it came from the server's reset, not from haze).
+# -r: no key auto-repeat. A key the tests hold over a few frames (Ctrl+A in a path field) was
+# repeated by the server; on a loaded machine a repeat of "a" could fall between xdotool's
+# release of Ctrl and of "a", and typed a stray "a" into the path (20 copies side by side: a
+# Save as to "a/tmp/...", 10 of 20 walkthroughs failed).
 start_xvfb() {
   command -v Xvfb >/dev/null || { echo "FAIL: Xvfb is not installed (make deps installs xvfb)"; exit 1; }
   local dfile n=""
   dfile=$(mktemp)
-  Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp -noreset 3>"$dfile" >/dev/null 2>&1 &
+  Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp -noreset -r 3>"$dfile" >/dev/null 2>&1 &
   XVFB_PID=$!
   trap 'kill $XVFB_PID 2>/dev/null' EXIT
   for _ in $(seq 200); do
