@@ -6,6 +6,8 @@
 set -u
 haze=$1
 repo=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
 show=$repo/tests/data/shows/valid.haze.json
 fail=0
 passed=0
@@ -20,15 +22,8 @@ expect() {
     fail=$((fail + 1))
     return
   fi
-  if node -e '
-    const got = JSON.parse(process.argv[1]), want = JSON.parse(process.argv[2]);
-    const same = (a, b) => typeof b === "number" ? typeof a === "number" && Math.abs(a - b) < 1e-4
-      : Array.isArray(b) ? Array.isArray(a) && a.length === b.length && b.every((x, i) => same(a[i], x)) : a === b;
-    let bad = [];
-    for (const id in want) for (const k in want[id])
-      if (!got[id] || !same(got[id][k], want[id][k]))
-        bad.push(id + "." + k + ": expected " + JSON.stringify(want[id][k]) + ", got " + JSON.stringify(got[id] && got[id][k]));
-    if (bad.length) { console.log(bad.join("\n")); process.exit(1); }' "$out" "$want"; then
+  printf '%s' "$out" >"$tmp/state.json"
+  if node "$repo/tests/node/expect_state.js" "$tmp/state.json" "$want" 1e-4 "haze state $args: fixture"; then
     passed=$((passed + 1))
   else
     echo "FAIL: haze state $args"
