@@ -17,22 +17,12 @@ live_start OSC "$ROOT/tests/data/live/cues.haze.json" --sacn --sacn-port 0 --osc
   --state-json "$TMP/state.json"
 
 # Each command waits for haze to log it, so the order on stage is the order sent.
-send() {
-  local want=$1
-  shift
-  oscsend 127.0.0.1 "$PORT" "$@" || fail "oscsend $* failed"
-  for _ in $(seq 300); do
-    grep -q "$want" "$HAZE_ERR" && return 0
-    sleep 0.05
-  done
-  fail "haze did not log '$want' after oscsend $*"
-}
-send 'OSC /haze/go from .*: cue 1$' /haze/go
-send 'OSC /haze/go from .*: cue 2$' /haze/go
-send 'OSC /haze/back from .*: cue 1$' /haze/back
-send 'OSC /haze/cue from .*: cue 3$' /haze/cue s 3
-send 'OSC /haze/fixture/2/intensity from .*: fixture 2$' /haze/fixture/2/intensity f 0.5
-send 'OSC /haze/fixture/2/color from .*: fixture 2$' /haze/fixture/2/color fff 0 1 0.25
+osc_send 'OSC /haze/go from .*: cue 1$' /haze/go
+osc_send 'OSC /haze/go from .*: cue 2$' /haze/go
+osc_send 'OSC /haze/back from .*: cue 1$' /haze/back
+osc_send 'OSC /haze/cue from .*: cue 3$' /haze/cue s 3
+osc_send 'OSC /haze/fixture/2/intensity from .*: fixture 2$' /haze/fixture/2/intensity f 0.5
+osc_send 'OSC /haze/fixture/2/color from .*: fixture 2$' /haze/fixture/2/color fff 0 1 0.25
 
 # Replies, and refusals: a datagram from Python's socket, hand-encoded, with the reply read back.
 python3 - "$PORT" <<'PY' || fail "OSC replies were not as expected"
@@ -75,8 +65,8 @@ expect_state "$TMP/state.json" '{"1": {"intensity": 0.6, "pan": 90}, "2": {"inte
 # picture as `haze render --cue 3 --camera Side`; an unknown name is refused with /haze/error.
 live_start OSC "$ROOT/tests/data/live/cues.haze.json" --sacn --sacn-port 0 --osc 0 --movement instant \
   --width 64 --height 36 --quality draft --render "$TMP/live.pfm"
-send 'OSC /haze/cue from .*: cue 3$' /haze/cue s 3
-send 'OSC /haze/camera from .*: camera "Side"$' /haze/camera s Side
+osc_send 'OSC /haze/cue from .*: cue 3$' /haze/cue s 3
+osc_send 'OSC /haze/camera from .*: camera "Side"$' /haze/camera s Side
 python3 - "$PORT" <<'PY' || fail "the /haze/camera replies were not as expected"
 import socket, sys
 port = int(sys.argv[1])

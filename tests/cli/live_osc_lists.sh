@@ -25,24 +25,14 @@ PY
 
 live_start OSC "$TMP/lists.haze.json" --sacn --sacn-port 0 --osc 0 --movement instant --state-json "$TMP/state.json"
 
-send() {
-  local want=$1
-  shift
-  oscsend 127.0.0.1 "$PORT" "$@" || fail "oscsend $* failed"
-  for _ in $(seq 300); do
-    grep -q "$want" "$HAZE_ERR" && return 0
-    sleep 0.05
-  done
-  fail "haze did not log '$want' after oscsend $*"
-}
-send 'OSC /haze/go from .*: cue 1$' /haze/go                                   # Main 1: 1 at 0.2, 3 red at 1
-send 'OSC /haze/list/Specials/go from .*: cue list "Specials": cue 1$' /haze/list/Specials/go
-send 'OSC /haze/list/Specials/go from .*: cue list "Specials": cue 2$' /haze/list/Specials/go
-send 'OSC /haze/list/Specials/back from .*: cue list "Specials": cue 1$' /haze/list/Specials/back
-send 'OSC /haze/list/Specials/master from .*: cue list "Specials": master 0.5$' /haze/list/Specials/master f 0.5
-send 'OSC /haze/go from .*: cue 2$' /haze/go                                   # Main 2: 1 at 0.4
-send 'OSC from .* refused: .*its lists are "Main", "Specials"' /haze/list/Nope/go
-send 'OSC from .* refused: .*0..1' /haze/list/Specials/master f 2
+osc_send 'OSC /haze/go from .*: cue 1$' /haze/go                                   # Main 1: 1 at 0.2, 3 red at 1
+osc_send 'OSC /haze/list/Specials/go from .*: cue list "Specials": cue 1$' /haze/list/Specials/go
+osc_send 'OSC /haze/list/Specials/go from .*: cue list "Specials": cue 2$' /haze/list/Specials/go
+osc_send 'OSC /haze/list/Specials/back from .*: cue list "Specials": cue 1$' /haze/list/Specials/back
+osc_send 'OSC /haze/list/Specials/master from .*: cue list "Specials": master 0.5$' /haze/list/Specials/master f 0.5
+osc_send 'OSC /haze/go from .*: cue 2$' /haze/go                                   # Main 2: 1 at 0.4
+osc_send 'OSC from .* refused: .*its lists are "Main", "Specials"' /haze/list/Nope/go
+osc_send 'OSC from .* refused: .*0..1' /haze/list/Specials/master f 2
 
 live_stop_ok
 grep -q 'haze live: OSC: 6 commands done, 2 refused' "$HAZE_ERR" || fail "the OSC counts are not 6 done, 2 refused"

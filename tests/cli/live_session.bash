@@ -140,6 +140,19 @@ live_wait_ok() {
 }
 
 # expect_state STATE.json WANT_JSON [TOLERANCE] [WHAT]: tests/node/expect_state.js.
+# osc_send WANT ARGS...: oscsend ARGS to the haze started last, then waits (up to 15 s) for haze
+# to log a line matching WANT, so commands reach the stage in the order sent.
+osc_send() {
+  local want=$1
+  shift
+  oscsend 127.0.0.1 "$PORT" "$@" || fail "oscsend $* failed"
+  for _ in $(seq 300); do
+    grep -q "$want" "$HAZE_ERR" && return 0
+    sleep 0.05
+  done
+  fail "haze did not log '$want' after oscsend $*"
+}
+
 expect_state() {
   need_node
   node "$NODE_DIR/expect_state.js" "$@"
