@@ -37,21 +37,28 @@ check "haze validate refuses to overwrite an existing file" bash -c '! "$0" vali
 
 cues=$(node -e 'const s = require(process.argv[1]); for (const c of s.cue_lists[0].cues) console.log(c.number)' "$demo")
 [ -n "$cues" ] || { echo "FAIL: no cues read from $demo"; fail=$((fail + 1)); }
-for cue in $cues; do
-  for at in "" "--at 0.5" "--at 1.5" "--at 3" "--at 6.5"; do
-    for movement in instant real; do
-      a=$("$haze" state "$demo" --cue "$cue" $at --movement $movement --json 2>&1)
-      b=$("$haze" state "$tmp/demo.haze.json" --cue "$cue" $at --movement $movement --json 2>&1)
-      if [ -n "$a" ] && [ "$a" = "$b" ] && grep -q '"intensity"' <<<"$a"; then
-        passed=$((passed + 1))
-      else
-        echo "FAIL: haze state --cue $cue $at --movement $movement differs between the version-1 demo and its version-2 copy"
-        diff <(echo "$a") <(echo "$b") | head -5
-        fail=$((fail + 1))
-      fi
+# same_states OTHER WHAT MOMENTS...: `haze state --json` of every cue of the version-1 demo, at
+# each moment ("" = full state) and in both movement modes, is byte for byte OTHER's.
+same_states() {
+  local other=$1 what=$2 cue at movement a b
+  shift 2
+  for cue in $cues; do
+    for at in "$@"; do
+      for movement in instant real; do
+        a=$("$haze" state "$demo" --cue "$cue" $at --movement $movement --json 2>&1)
+        b=$("$haze" state "$other" --cue "$cue" $at --movement $movement --json 2>&1)
+        if [ -n "$a" ] && [ "$a" = "$b" ] && grep -q '"intensity"' <<<"$a"; then
+          passed=$((passed + 1))
+        else
+          echo "FAIL: haze state --cue $cue $at --movement $movement differs between the version-1 demo and $what"
+          diff <(echo "$a") <(echo "$b") | head -5
+          fail=$((fail + 1))
+        fi
+      done
     done
   done
-done
+}
+same_states "$tmp/demo.haze.json" "its version-2 copy" "" "--at 0.5" "--at 1.5" "--at 3" "--at 6.5"
 
 # The bundled demo without its effects, with its paths made absolute so the copy can live in $tmp.
 node -e '
@@ -64,21 +71,7 @@ s.venue.gltf = path.resolve(dir, s.venue.gltf);
 for (const k in s.profiles) s.profiles[k] = path.resolve(dir, s.profiles[k]);
 fs.writeFileSync(dst, JSON.stringify(s, null, 1));' "$bundled" "$tmp/still.haze.json"
 check "the bundled demo has groups, palettes and one effect" [ -s "$tmp/still.haze.json" ]
-for cue in $cues; do
-  for at in "" "--at 0.5" "--at 3" "--at 100"; do
-    for movement in instant real; do
-      a=$("$haze" state "$demo" --cue "$cue" $at --movement $movement --json 2>&1)
-      b=$("$haze" state "$tmp/still.haze.json" --cue "$cue" $at --movement $movement --json 2>&1)
-      if [ -n "$a" ] && [ "$a" = "$b" ] && grep -q '"intensity"' <<<"$a"; then
-        passed=$((passed + 1))
-      else
-        echo "FAIL: haze state --cue $cue $at --movement $movement differs between the version-1 demo and the bundled demo's groups and palettes"
-        diff <(echo "$a") <(echo "$b") | head -5
-        fail=$((fail + 1))
-      fi
-    done
-  done
-done
+same_states "$tmp/still.haze.json" "the bundled demo's groups and palettes" "" "--at 0.5" "--at 3" "--at 100"
 # The effect: a circle of 4 degrees on the Beams, spread round the group, in cue 4.5.
 for at in 10 12.5 100; do
   "$haze" state "$tmp/still.haze.json" --cue 4.5 --at $at --json >"$tmp/still.json" 2>&1
