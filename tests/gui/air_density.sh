@@ -5,11 +5,6 @@
 # show (Ctrl+S writes the dragged value; one Ctrl+Z and Ctrl+S write the old one again).
 set -uo pipefail
 haze=$1; root=$2
-. "$root/tests/gui/xvfb.bash"
-start_xvfb
-tmp=$(mktemp -d)
-export XDG_CONFIG_HOME="$tmp/config"
-trap 'kill $pid 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT
 . "$root/tests/gui/gui_session.bash"
 show="$tmp/air.haze.json"
 python3 "$root/tests/show_copy.py" "$root/examples/demo/air.haze.json" "$show"

@@ -7,11 +7,6 @@
 # The saved show must hold cue 7 with fixtures 7-12 at 60 % (cue 5 has 7 at 50 %) and no cue 8. 640x360, draft quality.
 set -uo pipefail
 haze=$1; root=$2
-. "$root/tests/gui/xvfb.bash"
-start_xvfb
-tmp=$(mktemp -d)
-export XDG_CONFIG_HOME="$tmp/config"
-trap 'kill $pid 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT
 . "$root/tests/gui/gui_session.bash"
 
 mkdir -p "$tmp/show"

@@ -7,11 +7,6 @@
 # HAZE_FILE_DIALOG=typed the path popup is used instead (the walkthrough's Save as covers it).
 set -uo pipefail
 haze=$1; root=$2
-. "$root/tests/gui/xvfb.bash"
-start_xvfb
-tmp=$(mktemp -d)
-export XDG_CONFIG_HOME="$tmp/config"
-trap 'kill $pid 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT
 . "$root/tests/gui/gui_session.bash"
 
 mkdir -p "$tmp/show" "$tmp/bin"

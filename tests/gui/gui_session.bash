@@ -9,7 +9,15 @@
 # opens). On a
 # loaded machine frames get slow and the tests wait longer; they fail only if haze draws nothing
 # for 300 s (an import on a loaded machine holds one frame for long).
-# Needs: $root, $tmp; tests/gui/xvfb.bash sourced and start_xvfb run.
+# Sourcing it starts the test's own Xvfb and makes $tmp (removed on exit, with haze, the Xvfb and
+# any pids a test puts in $GUI_KILL). Needs: $haze, $root.
+. "$root/tests/gui/xvfb.bash"
+start_xvfb
+tmp=$(mktemp -d)
+export XDG_CONFIG_HOME="$tmp/config"   # recent files go here, not to the user's
+pid=""
+GUI_KILL=""
+trap 'kill $pid $GUI_KILL 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT
 for tool in xdotool import compare convert; do
   command -v $tool >/dev/null || { echo "FAIL: $tool is not installed (make deps installs it)"; exit 1; }
 done

@@ -5,11 +5,6 @@
 # the rig lit. 640x360, draft quality.
 set -uo pipefail
 haze=$1; root=$2
-. "$root/tests/gui/xvfb.bash"
-start_xvfb
-tmp=$(mktemp -d)
-export XDG_CONFIG_HOME="$tmp/config"
-trap 'kill $pid 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT
 . "$root/tests/gui/gui_session.bash"
 
 cp "$root/../shared/data/gdtf/mvr/capture_demo_show.mvr" "$tmp/rig.mvr"

@@ -7,11 +7,6 @@
 # about the unsaved change (Cancel stays, Discard exits with status 0). 640x360, draft quality.
 set -uo pipefail
 haze=$1; root=$2
-. "$root/tests/gui/xvfb.bash"
-start_xvfb
-tmp=$(mktemp -d)
-export XDG_CONFIG_HOME="$tmp/config"   # recent files go here, not to the user's
-trap 'kill $pid 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT
 . "$root/tests/gui/gui_session.bash"
 
 start_haze "haze - demo" "$root/examples/demo/demo.haze.json" --width 640 --height 360 --quality draft

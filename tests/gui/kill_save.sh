@@ -8,12 +8,6 @@
 # usage: kill_save.sh HAZE REPO [ROUNDS]
 set -uo pipefail
 haze=$1; root=$2; rounds=${3:-4}
-. "$root/tests/gui/xvfb.bash"
-start_xvfb
-tmp=$(mktemp -d)
-export XDG_CONFIG_HOME="$tmp/config"
-pid=""
-trap 'kill $pid 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT
 . "$root/tests/gui/gui_session.bash"
 show=$tmp/kill.haze.json
 python3 "$root/tests/show_copy.py" "$root/examples/demo/demo.haze.json" "$tmp/old.json" --compact

@@ -7,11 +7,6 @@
 # 640x360, draft quality.
 set -uo pipefail
 haze=$1; root=$2
-. "$root/tests/gui/xvfb.bash"
-start_xvfb
-tmp=$(mktemp -d)
-export XDG_CONFIG_HOME="$tmp/config"   # recent files go here, not to the user's
-trap 'kill $pid 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT
 . "$root/tests/gui/gui_session.bash"
 
 python3 - "$root/examples/demo/demo.haze.json" "$tmp/lists.haze.json" <<'PY' || { echo "FAIL: could not write the show"; exit 1; }

@@ -6,12 +6,6 @@
 # saved show has the spot where DMX put it and the washes (full at the bows) out.
 set -uo pipefail
 haze=$1; root=$2
-. "$root/tests/gui/xvfb.bash"
-start_xvfb
-tmp=$(mktemp -d)
-export XDG_CONFIG_HOME="$tmp/config"
-sender=""
-trap 'kill $pid $sender 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT
 . "$root/tests/gui/gui_session.bash"
 [ -d "$root/tests/node/node_modules/sacn" ] || { echo "FAIL: the npm sacn package is missing (make node-tools)"; exit 1; }
 show="$tmp/demo.haze.json"
@@ -26,12 +20,13 @@ SACN_HOST=$addr node "$root/tests/node/send_sacn.js" 5568 3000 \
   '[{"universe": 1, "priority": 100, "cid": 7, "name": "console", "slots": {"1": 255, "2": 192, "4": 64}}]' \
   >"$tmp/sent" 2>&1 &
 sender=$!
+GUI_KILL=$sender
 wait_until 60 'grep -q ready "$tmp/sent"' || { echo "FAIL: the sender never got going: $(cat "$tmp/sent")"; exit 1; }
 sleep 0.5
 tap ctrl+shift+r
 check "Ctrl+Shift+R records a cue (title '$(title)')" '[ "$(title)" = "haze - demo.haze.json *" ]'
 tap ctrl+s
-kill $sender 2>/dev/null; sender=""
+kill $sender 2>/dev/null; GUI_KILL=""
 tap ctrl+q
 wait_exit
 check "Ctrl+Q exits cleanly (status $rc)" '[ "$rc" = 0 ]'

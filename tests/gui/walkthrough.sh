@@ -9,11 +9,6 @@
 # the manual exposure, so the meter does not even them out).
 set -uo pipefail
 haze=$1; root=$2
-. "$root/tests/gui/xvfb.bash"
-start_xvfb
-tmp=$(mktemp -d)
-export XDG_CONFIG_HOME="$tmp/config"
-trap 'kill $pid 2>/dev/null; kill $XVFB_PID 2>/dev/null; rm -rf "$tmp"' EXIT
 . "$root/tests/gui/gui_session.bash"
 saved="$tmp/walk.haze.json"
 
