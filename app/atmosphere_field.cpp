@@ -32,7 +32,8 @@ std::vector<std::string> hazerWarnings(const Show& show, const DensityGrid& grid
 
 std::shared_ptr<const DensityField> AtmosphereField::at(const Show& show, const glm::vec3& venueMinM,
                                                         const glm::vec3& venueMaxM, double clockS,
-                                                        std::vector<std::string>& warnings) {
+                                                        std::vector<std::string>& warnings,
+                                                        const HazerSchedule& hazers) {
   if (!show.atmosphere.density) {
     sim_.reset();
     last_.reset();
@@ -42,11 +43,14 @@ std::shared_ptr<const DensityField> AtmosphereField::at(const Show& show, const 
   const DensityGrid grid = densityGrid(spec, venueMinM, venueMaxM);
   const bool same = sim_ && spec == spec_ && grid.minM == grid_.minM && grid.maxM == grid_.maxM &&
                     grid.n[0] == grid_.n[0] && grid.n[1] == grid_.n[1] && grid.n[2] == grid_.n[2];
+  if (!same || !(hazers == hazers_)) {
+    sim_ = std::make_unique<DensitySim>(spec, grid, hazers);
+    hazers_ = hazers;
+    last_.reset();
+  }
   if (!same) {
-    sim_ = std::make_unique<DensitySim>(spec, grid);
     spec_ = spec;
     grid_ = grid;
-    last_.reset();
     for (std::string& w : hazerWarnings(show, grid)) warnings.push_back(std::move(w));
   }
   const double t = densityTimeS(spec, clockS);

@@ -23,15 +23,18 @@ std::vector<std::string> hazerWarnings(const Show& show, const DensityGrid& grid
 class AtmosphereField {
  public:
   // The field at playback time clockS, or null when the show has no density (the uniform
-  // medium). New warnings (a hazer outside the venue, moved in) are appended once per spec,
-  // each naming the show file and the JSON pointer.
+  // medium), with the hazers at the levels of `hazers` (shows/hazer_levels.h; empty: full).
+  // New warnings (a hazer outside the venue, moved in) are appended once per spec, each naming
+  // the show file and the JSON pointer.
   std::shared_ptr<const DensityField> at(const Show& show, const glm::vec3& venueMinM, const glm::vec3& venueMaxM,
-                                         double clockS, std::vector<std::string>& warnings);
+                                         double clockS, std::vector<std::string>& warnings,
+                                         const HazerSchedule& hazers = {});
 
  private:
   std::unique_ptr<DensitySim> sim_;
   DensitySpec spec_;
   DensityGrid grid_;
+  HazerSchedule hazers_;
   double lastTimeS_ = -1.0;
   std::shared_ptr<const DensityField> last_;
 };

@@ -5,6 +5,7 @@
 
 #include "app/atmosphere_field.h"
 #include "app/frame_builder.h"
+#include "shows/hazer_levels.h"
 #include "shows/playback.h"
 #include "shows/show.h"
 
@@ -17,6 +18,7 @@ Status loadBenchShow(const std::string& file, const std::string& cue, const std:
   auto profiles = loadProfiles(*show);
   if (!profiles) return profiles.error();
   StageState state = defaultState(*show);
+  HazerSchedule hazers;
   if (const CueList* list = show->findCueList(""); list && !list->cues.empty()) {
     size_t index = 0;
     if (!cue.empty()) {
@@ -25,6 +27,7 @@ Status loadBenchShow(const std::string& file, const std::string& cue, const std:
       index = *found;
     }
     state = trackedState(*show, *profiles, *list, index);
+    hazers = hazerSchedule(*show, {{list, index}}, {});
   } else if (!cue.empty()) {
     return Error{file, "/cue_lists", "the show has no cues; --cue " + cue + " names none"};
   }
@@ -36,7 +39,7 @@ Status loadBenchShow(const std::string& file, const std::string& cue, const std:
   // The density field as a still of the cue shows it (at its GO).
   AtmosphereField atmosphere;
   std::vector<std::string> warnings;
-  auto density = atmosphere.at(*show, venue.boundsMin, venue.boundsMax, 0.0, warnings);
+  auto density = atmosphere.at(*show, venue.boundsMin, venue.boundsMax, 0.0, warnings, hazers);
   for (const std::string& w : warnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
   auto f = buildFrame(*show, *profiles, state, camera, FrameOptions{.mergeCells = mergeCells, .density = std::move(density)});
   if (!f) return f.error();

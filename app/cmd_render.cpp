@@ -15,6 +15,7 @@
 #include "app/list_plays.h"
 #include "app/progress.h"
 #include "app/render_session.h"
+#include "shows/hazer_levels.h"
 #include "shows/movement.h"
 #include "app/render_video.h"
 #include "shows/playback.h"
@@ -154,6 +155,7 @@ int runRender(const Args& args) {
     if (!state) return fail(state.error().str());
     auto session = RenderSession::open(*show, options);
     if (!session) return fail(session.error().str());
+    (*session)->setHazers(hazersOfPlays(*show, plays, at >= 0));
     const std::string comment = "haze render of " + showPath + ", cue lists " + describeListPlays(plays) +
                                 (at >= 0 ? ", " + secondsText(at) + " s after time 0" : ", their fades done");
     const Status s = (*session)->renderToFile(*show, *profiles, *state, out, comment, at < 0 ? 0.0 : at);
@@ -198,6 +200,12 @@ int runRender(const Args& args) {
     const StageState state = at < 0 ? trackedState(*show, *profiles, *cueList, index)
                              : movement == "real" ? movingStateAt(*show, *profiles, *cueList, index, at)
                                                   : stateAt(*show, *profiles, *cueList, index, at);
+    if (at < 0)
+      (*session)->setHazers(hazerSchedule(*show, {{cueList, index}}, {}));
+    else if (index > 0)
+      (*session)->setHazers(hazerSchedule(*show, {{cueList, index - 1}}, {{cueList, index, 0.0}}));
+    else
+      (*session)->setHazers(hazerSchedule(*show, {}, {{cueList, index, 0.0}}));
     const Cue& c = cueList->cues[index];
     const std::string comment = "haze render of " + showPath + ", cue list " + cueList->name + ", cue " + c.number +
                                 (c.label.empty() ? "" : " \"" + c.label + "\"") +
@@ -216,6 +224,7 @@ int runRender(const Args& args) {
     playback.timecode(*timecode, rate, 0.0);
     const StageState state = playback.stage(0.0, {}, {});
     const auto current = playback.currentCue();
+    if (current) (*session)->setHazers(hazerSchedule(*show, {{cueList, *current}}, {}));
     const std::string where = current ? "cue " + cueList->cues[*current].number : "before the first timed cue";
     std::fprintf(stderr, "haze render: timecode %s: %s\n", timecode->str().c_str(), where.c_str());
     const std::string comment = "haze render of " + showPath + ", cue list " + cueList->name + ", timecode " +

@@ -13,6 +13,7 @@
 #include "app/render_session.h"
 #include "app/state_json.h"
 #include "renderer/output/sheet_pdf.h"
+#include "shows/hazer_levels.h"
 #include "shows/playback.h"
 
 namespace haze {
@@ -101,6 +102,7 @@ int runSheet(const Args& args) {
     auto session = RenderSession::open(*show, options);
     if (!session) return fail(session.error().str());
     for (size_t i = 0; i < cueList->cues.size(); ++i) {
+      (*session)->setHazers(hazerSchedule(*show, {{cueList, i}}, {}));
       if (Status s = (*session)->draw(*show, *profiles, states[i]); !s) return fail(s.error().str());
       doc.cues[i].thumbnails.push_back({.width = kThumbPixelsWide, .height = kThumbPixelsHigh,
                                         .rgb8 = (*session)->display(*show)});

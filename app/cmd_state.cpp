@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/atmosphere_field.h"
+#include "shows/hazer_levels.h"
 #include "renderer/scene/venue.h"
 #include "app/command_line.h"
 #include "app/commands.h"
@@ -81,7 +82,10 @@ int runState(const Args& args) {
     return 1;
   }
   StageState state;
+  HazerSchedule hazers;  // the hazers' levels over the same playback (docs/shows.md, "Hazers in cues")
+  const bool atGiven = atS < 1e9;
   if (!plays.empty()) {
+    hazers = hazersOfPlays(*show, plays, atGiven);
     auto played = playListsAt(*show, *profiles, plays, atS, movement == "real");
     if (!played) {
       std::cerr << played.error().str() << "\n";
@@ -100,6 +104,12 @@ int runState(const Args& args) {
       std::cerr << file << ": " << cue.error().message << "\n";
       return 1;
     }
+    if (!atGiven)
+      hazers = hazerSchedule(*show, {{list, *cue}}, {});
+    else if (*cue > 0)
+      hazers = hazerSchedule(*show, {{list, *cue - 1}}, {{list, *cue, 0.0}});
+    else
+      hazers = hazerSchedule(*show, {}, {{list, *cue, 0.0}});
     if (follow) {
       CuePlayer player(*show, *profiles, *list);
       if (*cue > 0) player.jumpTo(*cue - 1, 0.0);
@@ -118,7 +128,6 @@ int runState(const Args& args) {
   }
 
   // The strobe runs on the playback clock, which starts at GO: --at is also the gate's time.
-  const bool atGiven = atS < 1e9;
   nlohmann::ordered_json out = stageStateJson(*show, *profiles, state, atGiven ? std::optional<double>(atS) : std::nullopt);
   // The density field at that time (docs/shows.md, "Density"), summed up.
   if (const auto& spec = show->atmosphere.density) {
@@ -135,7 +144,7 @@ int runState(const Args& args) {
     AtmosphereField atmosphere;
     std::vector<std::string> warnings;
     const double clockS = atGiven ? atS : 0.0;
-    const auto field = atmosphere.at(*show, lo, hi, clockS, warnings);
+    const auto field = atmosphere.at(*show, lo, hi, clockS, warnings, hazers);
     for (const std::string& w : warnings) std::cerr << "haze: warning: " << w << "\n";
     double sum = 0.0;
     for (float v : field->values) sum += v;
@@ -144,6 +153,12 @@ int runState(const Args& args) {
                          {"bounds", {{field->minM.x, field->minM.y, field->minM.z}, {field->maxM.x, field->maxM.y, field->maxM.z}}},
                          {"mean_density", sum / static_cast<double>(field->values.size())},
                          {"max_density", field->maxValue()}};
+    nlohmann::ordered_json levels = nlohmann::ordered_json::array();
+    for (size_t h = 0; h < spec->hazers.size(); ++h) {
+      const HazerLevel l = hazers.at(h, densityTimeS(*spec, clockS));
+      levels.push_back({{"output", l.output}, {"fan", l.fan}});
+    }
+    out["atmosphere"]["hazers"] = levels;
   }
   if (json) {
     std::cout << out.dump(2) << "\n";

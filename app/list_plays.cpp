@@ -107,4 +107,21 @@ std::string describeListPlays(const std::vector<ListPlay>& plays) {
   return out;
 }
 
+HazerSchedule hazersOfPlays(const Show& show, const std::vector<ListPlay>& plays, bool timed) {
+  std::vector<HazerCue> onStage, gos;
+  for (const ListPlay& play : plays) {
+    const CueList* list = show.findCueList(play.list);
+    if (!list) continue;
+    const auto cue = findCue(*list, play.cue);
+    if (!cue) continue;
+    if (!timed)
+      onStage.push_back({list, *cue});
+    else {
+      if (*cue > 0) onStage.push_back({list, *cue - 1});
+      gos.push_back({list, *cue, play.goAtS});
+    }
+  }
+  return hazerSchedule(show, onStage, gos);
+}
+
 }  // namespace haze

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fixtures/core/result.h"
+#include "shows/hazer_levels.h"
 #include "shows/playback.h"
 #include "shows/show.h"
 
@@ -28,6 +29,11 @@ Result<ListPlay> parseListPlay(const std::string& text);
 // list played twice.
 Result<StageState> playListsAt(const Show& show, const ProfileSet& profiles, const std::vector<ListPlay>& plays,
                                double atS, bool realMovement);
+
+// The hazers' levels the plays give (docs/shows.md, "Hazers in cues"): with `timed`, each list's
+// cue before CUE on stage from time 0 and a GO into CUE at GO_S; without, every CUE's full
+// state. Plays naming an unknown list or cue add nothing (playListsAt says why).
+HazerSchedule hazersOfPlays(const Show& show, const std::vector<ListPlay>& plays, bool timed);
 
 // "Main cue 2, Specials cue 1 at master 0.5 GO at 2 s": for captions and image comments.
 std::string describeListPlays(const std::vector<ListPlay>& plays);

@@ -70,7 +70,7 @@ Result<std::unique_ptr<RenderSession>> RenderSession::open(const Show& show, con
 Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const StageState& state, bool reportRows,
                            double clockS) {
   std::vector<std::string> warnings;
-  auto density = atmosphere_.at(show, venue_.boundsMin, venue_.boundsMax, clockS, warnings);
+  auto density = atmosphere_.at(show, venue_.boundsMin, venue_.boundsMax, clockS, warnings, hazers_);
   for (const std::string& w : warnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
   auto frame = buildFrame(show, profiles, state, options_.camera,
                           FrameOptions{.mergeCells = options_.mergeCells, .bodies = options_.bodies, .density = std::move(density)});

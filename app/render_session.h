@@ -36,6 +36,9 @@ class RenderSession {
   ImageRGB radiance() const;
   std::vector<unsigned char> display(const Show& show);
   const RenderJobOptions& options() const { return options_; }
+  // How the hazers run over the playback (shows/hazer_levels.h); the frames drawn after this
+  // see the density field of that schedule.
+  void setHazers(HazerSchedule hazers) { hazers_ = std::move(hazers); }
 
   // `comment` goes into an EXR's header (what was rendered: show, cue list, cue, time).
   Status renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
@@ -53,6 +56,7 @@ class RenderSession {
   float lastExposureEv_ = 0.0f;
   std::optional<ImageRGB> referenceImage_;  // the last draw's, under Quality::Reference
   AtmosphereField atmosphere_;
+  HazerSchedule hazers_;
 };
 
 }  // namespace haze

@@ -18,6 +18,7 @@
 #include "shows/cue_player.h"
 #include "shows/cue_timeline.h"
 #include "shows/dmx/live_playback.h"
+#include "shows/hazer_levels.h"
 #include "shows/movement.h"
 
 namespace haze {
@@ -137,6 +138,28 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
     if (!created) return created.error();
     writer = std::move(*created);
   }
+
+  // The hazers go with the same GOs as the fixtures (docs/shows.md, "Hazers in cues").
+  std::vector<HazerCue> hazersOnStage, hazerGos;
+  if (live) {
+    // The timecode's own firing rule, played once without drawing: one copy of it.
+    LivePlayback dry(show, profiles, &list);
+    std::optional<size_t> current;
+    for (int f = 0; f < frames; ++f) {
+      const double t = static_cast<double>(f) / job.fps;
+      const auto label = Timecode::fromFrames(startFrame + static_cast<long>(std::floor(t * job.timecodeRate + 1e-9)),
+                                              job.timecodeRate);
+      if (!label) break;  // the frame loop says so
+      dry.timecode(*label, job.timecodeRate, t);
+      const auto now = dry.currentCue();
+      if (now && now != current) (f == 0 ? hazersOnStage : hazerGos).push_back({&list, *now, t});
+      current = now;
+    }
+  } else {
+    if (firstCue > 0) hazersOnStage.push_back({&list, firstCue - 1, 0.0});
+    for (const CueGo& g : timeline.gos) hazerGos.push_back({&list, g.cueIndex, g.atS});
+  }
+  session.setHazers(hazerSchedule(show, hazersOnStage, hazerGos));
 
   CuePlayer player(show, profiles, list);
   if (firstCue > 0) player.jumpTo(firstCue - 1, 0.0);

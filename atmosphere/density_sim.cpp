@@ -52,7 +52,8 @@ long long densitySimBytes(const DensityGrid& g) {
   return cells * 4 * 4 + 3 * (cells + g.n[0] * g.n[1] + g.n[1] * g.n[2] + g.n[0] * g.n[2]) * 4;
 }
 
-DensitySim::DensitySim(const DensitySpec& spec, const DensityGrid& grid) : spec_(spec), grid_(grid) {
+DensitySim::DensitySim(const DensitySpec& spec, const DensityGrid& grid, const HazerSchedule& schedule)
+    : spec_(spec), grid_(grid), schedule_(schedule) {
   const int nx = grid.n[0], ny = grid.n[1], nz = grid.n[2];
   const DensityField shape = DensityField::filled(nx, ny, nz, grid.minM, grid.maxM, 0.0f);
   h_ = shape.cellSizeM();
@@ -72,33 +73,38 @@ DensitySim::DensitySim(const DensitySpec& spec, const DensityGrid& grid) : spec_
       }
 
   // The air at the faces: the room's flow plus every fan; the grid's own faces are walls.
-  const float r0 = std::max(0.5f * std::max({h_.x, h_.y, h_.z}), 0.05f);
-  std::vector<glm::vec3> dirs;
+  r0_ = std::max(0.5f * std::max({h_.x, h_.y, h_.z}), 0.05f);
   for (const HazerSpec& hz : spec.hazers) {
     const float len = glm::length(hz.direction);
-    dirs.push_back(len > 0.0f ? hz.direction / len : glm::vec3(0.0f, 0.0f, -1.0f));
+    dirs_.push_back(len > 0.0f ? hz.direction / len : glm::vec3(0.0f, 0.0f, -1.0f));
   }
-  auto air = [&](const glm::vec3& p) {
-    glm::vec3 u = spec.airFlowMps;
-    for (size_t i = 0; i < spec.hazers.size(); ++i) u += fanVelocity(spec.hazers[i], dirs[i], r0, p);
-    return u;
-  };
-  ux_.assign(static_cast<size_t>(nx + 1) * ny * nz, 0.0f);
-  uy_.assign(static_cast<size_t>(nx) * (ny + 1) * nz, 0.0f);
-  uz_.assign(static_cast<size_t>(nx) * ny * (nz + 1), 0.0f);
-  const glm::vec3 o = grid.minM;
-  for (int z = 0; z < nz; ++z)
-    for (int y = 0; y < ny; ++y)
-      for (int x = 1; x < nx; ++x)
-        ux_[(static_cast<size_t>(z) * ny + y) * (nx + 1) + x] = air(o + glm::vec3(x, y + 0.5f, z + 0.5f) * h_).x;
-  for (int z = 0; z < nz; ++z)
-    for (int y = 1; y < ny; ++y)
-      for (int x = 0; x < nx; ++x)
-        uy_[(static_cast<size_t>(z) * (ny + 1) + y) * nx + x] = air(o + glm::vec3(x + 0.5f, y, z + 0.5f) * h_).y;
-  for (int z = 1; z < nz; ++z)
-    for (int y = 0; y < ny; ++y)
-      for (int x = 0; x < nx; ++x)
-        uz_[(static_cast<size_t>(z) * ny + y) * nx + x] = air(o + glm::vec3(x + 0.5f, y + 0.5f, z) * h_).z;
+  std::vector<float> full(spec.hazers.size(), 1.0f);
+  if (!schedule_.fansChange()) {
+    // Fans held at one level: the air is summed once, at that level.
+    for (size_t i = 0; i < full.size(); ++i) full[i] = std::clamp(schedule_.at(i, 0.0).fan, 0.0f, 1.0f);
+    fillFaces(full, true, ux_, uy_, uz_);
+  } else {
+    fillFaces({}, true, roomX_, roomY_, roomZ_);
+    fanX_.resize(spec.hazers.size());
+    fanY_.resize(spec.hazers.size());
+    fanZ_.resize(spec.hazers.size());
+    for (size_t i = 0; i < spec.hazers.size(); ++i) {
+      std::vector<float> one(spec.hazers.size(), 0.0f);
+      one[i] = 1.0f;
+      fillFaces(one, false, fanX_[i], fanY_[i], fanZ_[i]);
+    }
+    // The step must hold at any level in 0..1: the bound |room| + sum |fan| on every face.
+    ux_ = roomX_, uy_ = roomY_, uz_ = roomZ_;
+    for (float& v : ux_) v = std::fabs(v);
+    for (float& v : uy_) v = std::fabs(v);
+    for (float& v : uz_) v = std::fabs(v);
+    for (size_t i = 0; i < spec.hazers.size(); ++i)
+      for (size_t f = 0; f < ux_.size(); ++f) ux_[f] += std::fabs(fanX_[i][f]);
+    for (size_t i = 0; i < spec.hazers.size(); ++i)
+      for (size_t f = 0; f < uy_.size(); ++f) uy_[f] += std::fabs(fanY_[i][f]);
+    for (size_t i = 0; i < spec.hazers.size(); ++i)
+      for (size_t f = 0; f < uz_.size(); ++f) uz_[f] += std::fabs(fanZ_[i][f]);
+  }
 
   // The step: every cell's outflow (advection through its faces plus diffusion) below 0.9 of it.
   double rate = 0.0;
@@ -119,7 +125,7 @@ DensitySim::DensitySim(const DensitySpec& spec, const DensityGrid& grid) : spec_
 
   for (size_t i = 0; i < spec.hazers.size(); ++i) {
     // The haze enters the cell just in front of the nozzle.
-    const glm::vec3 at = spec.hazers[i].positionM + dirs[i] * (0.5f * std::min({h_.x, h_.y, h_.z}));
+    const glm::vec3 at = spec.hazers[i].positionM + dirs_[i] * (0.5f * std::min({h_.x, h_.y, h_.z}));
     int c[3];
     for (int k = 0; k < 3; ++k) {
       const float u = (at[k] - grid.minM[k]) / h_[k];
@@ -129,6 +135,48 @@ DensitySim::DensitySim(const DensitySpec& spec, const DensityGrid& grid) : spec_
   }
   clamped_ = hazersOutside(spec, grid);
   reset();
+}
+
+void DensitySim::fillFaces(const std::vector<float>& fanLevels, bool roomAir, std::vector<float>& ux,
+                           std::vector<float>& uy, std::vector<float>& uz) const {
+  const int nx = grid_.n[0], ny = grid_.n[1], nz = grid_.n[2];
+  auto air = [&](const glm::vec3& p) {
+    glm::vec3 u = roomAir ? spec_.airFlowMps : glm::vec3(0.0f);
+    for (size_t i = 0; i < fanLevels.size(); ++i)
+      if (fanLevels[i] > 0.0f) u += fanLevels[i] * fanVelocity(spec_.hazers[i], dirs_[i], r0_, p);
+    return u;
+  };
+  ux.assign(static_cast<size_t>(nx + 1) * ny * nz, 0.0f);
+  uy.assign(static_cast<size_t>(nx) * (ny + 1) * nz, 0.0f);
+  uz.assign(static_cast<size_t>(nx) * ny * (nz + 1), 0.0f);
+  const glm::vec3 o = grid_.minM;
+  for (int z = 0; z < nz; ++z)
+    for (int y = 0; y < ny; ++y)
+      for (int x = 1; x < nx; ++x)
+        ux[(static_cast<size_t>(z) * ny + y) * (nx + 1) + x] = air(o + glm::vec3(x, y + 0.5f, z + 0.5f) * h_).x;
+  for (int z = 0; z < nz; ++z)
+    for (int y = 1; y < ny; ++y)
+      for (int x = 0; x < nx; ++x)
+        uy[(static_cast<size_t>(z) * (ny + 1) + y) * nx + x] = air(o + glm::vec3(x + 0.5f, y, z + 0.5f) * h_).y;
+  for (int z = 1; z < nz; ++z)
+    for (int y = 0; y < ny; ++y)
+      for (int x = 0; x < nx; ++x)
+        uz[(static_cast<size_t>(z) * ny + y) * nx + x] = air(o + glm::vec3(x + 0.5f, y + 0.5f, z) * h_).z;
+}
+
+void DensitySim::setFans(double tS) {
+  if (fanX_.empty()) return;  // the fans hold one level: ux_.. were summed once
+  std::vector<float> levels(spec_.hazers.size());
+  for (size_t i = 0; i < levels.size(); ++i) levels[i] = std::clamp(schedule_.at(i, tS).fan, 0.0f, 1.0f);
+  if (levels == fanLevels_) return;
+  fanLevels_ = levels;
+  ux_ = roomX_, uy_ = roomY_, uz_ = roomZ_;
+  for (size_t i = 0; i < levels.size(); ++i) {
+    if (levels[i] == 0.0f) continue;
+    for (size_t f = 0; f < ux_.size(); ++f) ux_[f] += levels[i] * fanX_[i][f];
+    for (size_t f = 0; f < uy_.size(); ++f) uy_[f] += levels[i] * fanY_[i][f];
+    for (size_t f = 0; f < uz_.size(); ++f) uz_[f] += levels[i] * fanZ_[i][f];
+  }
 }
 
 std::vector<int> hazersOutside(const DensitySpec& spec, const DensityGrid& grid) {
@@ -147,7 +195,9 @@ void DensitySim::reset() {
   k_ = 0;
 }
 
-void DensitySim::step(std::vector<float>& c, double dt) const {
+void DensitySim::step(std::vector<float>& c, double t0, double dt) {
+  const double mid = t0 + 0.5 * dt;
+  setFans(mid);
   const int nx = grid_.n[0], ny = grid_.n[1], nz = grid_.n[2];
   scratch_ = c;
   std::vector<float>& out = scratch_;
@@ -183,7 +233,8 @@ void DensitySim::step(std::vector<float>& c, double dt) const {
   (void)sx;
   const float volume = h_.x * h_.y * h_.z;
   for (size_t i = 0; i < spec_.hazers.size(); ++i)
-    out[sourceCell_[i]] += static_cast<float>(std::max(spec_.hazers[i].output, 0.0f) * dt / volume);
+    out[sourceCell_[i]] += static_cast<float>(std::max(spec_.hazers[i].output, 0.0f) *
+                                              std::clamp(schedule_.at(i, mid).output, 0.0f, 1.0f) * dt / volume);
   if (spec_.dissipationPerS > 0.0f) {
     const float keep = static_cast<float>(std::exp(-double(spec_.dissipationPerS) * dt));
     for (float& v : out) v *= keep;
@@ -198,14 +249,14 @@ void DensitySim::advanceTo(double tS) {
     k_ = target;
     return;
   }
-  for (; k_ < target; ++k_) step(haze_, dt_);
+  for (; k_ < target; ++k_) step(haze_, static_cast<double>(k_) * dt_, dt_);
 }
 
 DensityField DensitySim::fieldAt(double tS) {
   advanceTo(tS);
   std::vector<float> haze = haze_;
   const double rest = std::max(tS, 0.0) - static_cast<double>(k_) * dt_;
-  if (rest > 1e-9 && !spec_.hazers.empty()) step(haze, rest);
+  if (rest > 1e-9 && !spec_.hazers.empty()) step(haze, static_cast<double>(k_) * dt_, rest);
   DensityField f = DensityField::filled(grid_.n[0], grid_.n[1], grid_.n[2], grid_.minM, grid_.maxM, 0.0f);
   for (size_t i = 0; i < f.values.size(); ++i) f.values[i] = still_[i] + std::max(haze[i], 0.0f);
   return f;
@@ -215,7 +266,7 @@ double DensitySim::hazeTotalAt(double tS) {
   advanceTo(tS);
   std::vector<float> haze = haze_;
   const double rest = std::max(tS, 0.0) - static_cast<double>(k_) * dt_;
-  if (rest > 1e-9 && !spec_.hazers.empty()) step(haze, rest);
+  if (rest > 1e-9 && !spec_.hazers.empty()) step(haze, static_cast<double>(k_) * dt_, rest);
   double sum = 0.0;
   for (float v : haze) sum += v;
   return sum * static_cast<double>(h_.x) * h_.y * h_.z;

@@ -10,6 +10,7 @@
 
 #include "atmosphere/density_field.h"
 #include "atmosphere/density_spec.h"
+#include "atmosphere/hazer_schedule.h"
 
 namespace haze {
 
@@ -29,8 +30,9 @@ long long densitySimBytes(const DensityGrid& grid);
 class DensitySim {
  public:
   // Hazers outside the grid are moved to its nearest inside point (a warning is the caller's,
-  // hazersClamped() says which); the grid must be checked against the limits before.
-  DensitySim(const DensitySpec& spec, const DensityGrid& grid);
+  // hazersClamped() says which); the grid must be checked against the limits before. The
+  // schedule says how hard each hazer and its fan run at each simulation time (none: full).
+  DensitySim(const DensitySpec& spec, const DensityGrid& grid, const HazerSchedule& schedule = {});
 
   // The field at simulation time t >= 0 (seconds the hazers have run). Going back in time
   // starts over from 0.
@@ -44,7 +46,11 @@ class DensitySim {
  private:
   void reset();
   void advanceTo(double tS);
-  void step(std::vector<float>& c, double dt) const;
+  // One step of dt from time t0: sources and fans at their levels at t0 + dt / 2.
+  void step(std::vector<float>& c, double t0, double dt);
+  void fillFaces(const std::vector<float>& fanLevels, bool roomAir, std::vector<float>& ux, std::vector<float>& uy,
+                 std::vector<float>& uz) const;
+  void setFans(double tS);
 
   DensitySpec spec_;
   DensityGrid grid_;
@@ -53,7 +59,15 @@ class DensitySim {
   std::vector<float> still_;           // base, fog and boxes per cell
   std::vector<float> haze_;            // the hazers' haze per cell, at step k_
   mutable std::vector<float> scratch_;
+  HazerSchedule schedule_;
+  std::vector<glm::vec3> dirs_;        // per hazer, unit
+  float r0_ = 0.05f;                   // the jets' radius at the nozzle
   std::vector<float> ux_, uy_, uz_;    // air speed at the cell faces (x faces: (nx + 1) ny nz)
+  // When fans change over time: the room's air and each fan at full speed, which ux_.. are
+  // summed from at the levels of each step (fanLevels_ the levels they hold now).
+  std::vector<float> roomX_, roomY_, roomZ_;
+  std::vector<std::vector<float>> fanX_, fanY_, fanZ_;
+  std::vector<float> fanLevels_;
   std::vector<size_t> sourceCell_;     // per hazer
   std::vector<int> clamped_;
   long long k_ = 0;                    // steps done

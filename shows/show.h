@@ -157,6 +157,13 @@ struct EffectDef {
   bool operator==(const EffectDef&) const = default;
 };
 
+// A cue's levels for one hazer of the show's density field (docs/shows.md, "Hazers in cues"):
+// fractions of its output and of its fan's speed; unset ones track from the cue before.
+struct HazerCueDef {
+  std::optional<float> output, fan;
+  bool operator==(const HazerCueDef&) const = default;
+};
+
 struct Cue {
   std::string number;  // decimal string: "1", "1.5", "10"
   std::string label;
@@ -167,6 +174,7 @@ struct Cue {
   std::map<int, CueValues> values;  // by fixture id
   CueTimingDef timing;
   std::vector<EffectDef> effects;
+  std::map<int, HazerCueDef> hazers;  // by hazer number, counted from 1 in atmosphere.density.hazers
 };
 
 struct CueList {

@@ -720,6 +720,38 @@ constexpr const char* kEffectAttributes[] = {"intensity", "pan", "tilt", "zoom",
 constexpr size_t kMaxEffectColors = 64;
 
 // "effects": [{"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed", "colors"}]
+// "hazers": {"1": {"output", "fan"}}: hazers of atmosphere.density counted from 1 (docs/shows.md,
+// "Hazers in cues"); the atmosphere is read before the cue lists.
+void readHazerLevels(Reader& r, const json& j, const std::string& hp, const Show& show, std::map<int, HazerCueDef>& out) {
+  if (!r.isObject(j, hp, "hazer levels by hazer number")) return;
+  const size_t count = show.atmosphere.density ? show.atmosphere.density->hazers.size() : 0;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string p = hp + "/" + pointerToken(it.key());
+    long long n = 0;
+    auto [end, ec] = std::from_chars(it.key().data(), it.key().data() + it.key().size(), n);
+    if (it.key().empty() || it.key()[0] == '0' || ec != std::errc() || end != it.key().data() + it.key().size() ||
+        n < 1 || n > 4096) {
+      r.problem(p, "expected a hazer number (from 1, written as a string like \"2\"), got \"" + it.key() + "\"");
+      continue;
+    }
+    if (static_cast<size_t>(n) > count) {
+      r.problem(p, "hazer " + it.key() + " does not exist: atmosphere.density has " + std::to_string(count) +
+                       (count == 1 ? " hazer" : " hazers"));
+      continue;
+    }
+    const json& h = *it;
+    if (!r.isObject(h, p, "a hazer's levels")) continue;
+    r.onlyKeys(h, p, {"output", "fan"});
+    HazerCueDef d;
+    double x = 0;
+    if (const json* v = r.member(h, p, "output", false))
+      if (r.number(*v, p + "/output", 0.0, 1.0, "an output level (0..1 of the hazer's output)", x)) d.output = static_cast<float>(x);
+    if (const json* v = r.member(h, p, "fan", false))
+      if (r.number(*v, p + "/fan", 0.0, 1.0, "a fan level (0..1 of the fan's speed)", x)) d.fan = static_cast<float>(x);
+    out[static_cast<int>(n)] = d;
+  }
+}
+
 void readEffects(Reader& r, const json& j, const std::string& ep, std::vector<EffectDef>& out) {
   if (!r.isArray(j, ep, "the cue's effects")) return;
   for (size_t i = 0; i < j.size(); ++i) {
@@ -812,7 +844,8 @@ void readCueLists(Reader& r, const json& root, Show& show) {
           const std::string p = lp + "/cues/" + std::to_string(ci);
           Cue cue;
           if (r.isObject(c, p, "a cue")) {
-            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "timecode", "timing", "effects", "values"});
+            r.onlyKeys(c, p, {"number", "label", "fade", "delay", "follow", "timecode", "timing", "effects", "hazers",
+                              "values"});
             if (r.stringMember(c, p, "number", true, "a cue number (a decimal string like \"1.5\")", cue.number, true) &&
                 !isCueNumber(cue.number)) {
               r.problem(p + "/number", "expected a cue number: digits with an optional decimal part, like \"1\" "
@@ -841,6 +874,7 @@ void readCueLists(Reader& r, const json& root, Show& show) {
             }
             if (const json* j = r.member(c, p, "timing", false)) readTiming(r, *j, p + "/timing", cue.timing);
             if (const json* j = r.member(c, p, "effects", false)) readEffects(r, *j, p + "/effects", cue.effects);
+            if (const json* j = r.member(c, p, "hazers", false)) readHazerLevels(r, *j, p + "/hazers", show, cue.hazers);
             if (const json* j = r.member(c, p, "values", false)) readFixtureValues(r, *j, p + "/values", cue.values, true);
           }
           list.cues.push_back(std::move(cue));
@@ -999,6 +1033,7 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
                                    " (set \"version\": 2)";
           if (!cue.timing.empty()) r.problem(p + "/timing", "\"timing\"" + need);
           if (!cue.effects.empty()) r.problem(p + "/effects", "\"effects\"" + need);
+          if (!cue.hazers.empty()) r.problem(p + "/hazers", "\"hazers\"" + need);
         }
   } catch (const std::exception& e) {
     // Every access above checks types first; this is a last guard so nothing escapes the library.

@@ -282,6 +282,16 @@ ojson showJson(const Show& s) {
         }
         o["effects"] = effects;
       }
+      if (!c.hazers.empty()) {
+        ojson hazers = ojson::object();
+        for (const auto& [n, h] : c.hazers) {
+          ojson j = ojson::object();
+          if (h.output) j["output"] = tidy(*h.output);
+          if (h.fan) j["fan"] = tidy(*h.fan);
+          hazers[std::to_string(n)] = j;
+        }
+        o["hazers"] = hazers;
+      }
       ojson vals = ojson::object();
       for (const auto& [id, v] : c.values) vals[std::to_string(id)] = valuesJson(v);
       o["values"] = vals;

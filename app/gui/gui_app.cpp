@@ -21,6 +21,7 @@
 #include "app/frame_builder.h"
 #include "app/command_line.h"
 #include "app/gui/gui.h"
+#include "shows/hazer_levels.h"
 #include "shows/edit/recent_files.h"
 #include "app/render_session.h"
 #include "shows/dmx/udp_receiver.h"
@@ -307,8 +308,12 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   frameOptions.bodies = gui.showBodies;
   if (flash) frameOptions.time = FrameTime{gui.nowS, exposureS};
   std::vector<std::string> densityWarnings;
+  // The field is a still: the hazers at the levels of each list's current cue, its fade done.
+  std::vector<HazerCue> hazersOnStage;
+  for (size_t l = 0; l < gui.doc->listCount(); ++l)
+    if (const auto cue = gui.doc->listCue(l)) hazersOnStage.push_back({&gui.doc->show().cueLists[l], *cue});
   frameOptions.density = gui.atmosphere.at(gui.doc->show(), gui.doc->venue().boundsMin, gui.doc->venue().boundsMax, 0.0,
-                                           densityWarnings);
+                                           densityWarnings, hazerSchedule(gui.doc->show(), hazersOnStage, {}));
   for (const std::string& w : densityWarnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
   auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "", frameOptions);
   if (!frameState) return frameState.error();

@@ -2,7 +2,8 @@
 # atmosphere.density from the command line (docs/shows.md, "Density"): `haze state --at` gives
 # the field at that time, a render at two times differs as the plume drifts, a grid too large
 # and a negative output are refused naming their place, a hazer outside the venue is warned
-# about (file and place) by render, state and validate, and `haze bench --density` gives the cost ratio.
+# about (file and place) by render, state and validate, cues set the hazers' levels, and
+# `haze bench --density` gives the cost ratio.
 set -uo pipefail
 haze=$1; root=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -66,6 +67,41 @@ if [ -x "$ajv" ]; then
   check "haze validate takes the same show" '"$haze" validate "$tmp/full.haze.json" >/dev/null 2>&1'
 else
   fail=$((fail + 1)); echo "FAIL: ajv is missing from tests/node/node_modules; run 'npm ci' in tests/node"
+fi
+
+# Hazers in cues (docs/shows.md, "Hazers in cues"): cue 1 holds the hazer off, cue 2 (delay 1 s,
+# fade 4 s) brings it up to full output and half fan.
+with "$tmp/cued.haze.json" '{"base": 0.5, "grid": 16, "warmup": 5,
+  "hazers": [{"position": [-0.8, 0.2, 0], "direction": [1, 0.3, 0], "output": 0.05, "speed": 1}]}'
+python3 - "$tmp/cued.haze.json" "$tmp/off.haze.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+s['version'] = 2
+cues = s['cue_lists'][0]['cues']
+cues[0]['hazers'] = {'1': {'output': 0, 'fan': 0}}
+cues[1]['hazers'] = {'1': {'output': 1, 'fan': 0.5}}
+cues[1]['delay'] = 1
+cues[1]['fade'] = 4
+json.dump(s, open(sys.argv[1], 'w'), indent=1)
+for c in cues: c.pop('hazers', None)
+s['atmosphere']['density']['hazers'][0]['output'] = 0
+json.dump(s, open(sys.argv[2], 'w'), indent=1)
+PY
+"$haze" state "$tmp/cued.haze.json" --cue 2 --at 3 --json >"$tmp/h.json" 2>"$tmp/err"; rc=$?
+check "state gives the hazer's levels halfway through the fade: 0.5 and 0.25 (rc $rc: $(cat "$tmp/err"))" \
+  'python3 -c "import json,sys; h=json.load(open(sys.argv[1]))[\"atmosphere\"][\"hazers\"]; sys.exit(not (abs(h[0][\"output\"] - 0.5) < 1e-6 and abs(h[0][\"fan\"] - 0.25) < 1e-6))" "$tmp/h.json"'
+"$haze" state "$tmp/cued.haze.json" --cue 1 --json >"$tmp/h1.json" 2>/dev/null
+"$haze" state "$tmp/cued.haze.json" --cue 2 --json >"$tmp/h2.json" 2>/dev/null
+check "a hazer held off by its cue adds no haze; the next cue's does" \
+  'python3 -c "import json,sys; a=json.load(open(sys.argv[1]))[\"atmosphere\"]; b=json.load(open(sys.argv[2]))[\"atmosphere\"]; sys.exit(not (a[\"max_density\"] == 0.5 and a[\"hazers\"][0][\"output\"] == 0 and b[\"max_density\"] > 0.5))" "$tmp/h1.json" "$tmp/h2.json"'
+"$haze" render "$tmp/cued.haze.json" --cue 1 --width 80 --height 45 -o "$tmp/k1.pfm" 2>/dev/null
+"$haze" render "$tmp/off.haze.json" --cue 1 --width 80 --height 45 -o "$tmp/k0.pfm" 2>/dev/null
+check "a render of the cue holding the hazer off is the render of a hazer with no output" \
+  '[ -s "$tmp/k1.pfm" ] && cmp -s "$tmp/k1.pfm" "$tmp/k0.pfm"'
+"$haze" render "$tmp/cued.haze.json" --cue 2 --width 80 --height 45 -o "$tmp/k2.pfm" 2>/dev/null
+check "the cue running it renders differently" '[ -s "$tmp/k2.pfm" ] && ! cmp -s "$tmp/k2.pfm" "$tmp/k0.pfm"'
+if [ -x "$ajv" ]; then
+  check "the schema takes hazer levels in cues" 'schema "$tmp/cued.haze.json"'
 fi
 
 "$haze" bench --fixtures 2 --density 16 --width 160 --height 90 --frames 1 --json >"$tmp/bench.json" 2>"$tmp/err"
