@@ -2,6 +2,7 @@
 // every time a cue plays, so nothing copies a palette's values into the cues that use it.
 #include "shows/palettes.h"
 
+#include <cctype>
 #include <map>
 #include <set>
 
@@ -79,6 +80,173 @@ CueValues resolveValues(const Show& show, int fixtureId, const CueValues& values
   layValues(out, values);
   out.palettes = values.palettes;
   return out;
+}
+
+namespace {
+
+// Calls f(member) for every optional value of CueValues (cells aside).
+template <typename F>
+void forEachValue(F f) {
+  f(&CueValues::intensity);
+  f(&CueValues::panDeg);
+  f(&CueValues::tiltDeg);
+  f(&CueValues::zoomDeg);
+  f(&CueValues::goboRotationDeg);
+  f(&CueValues::iris);
+  f(&CueValues::color);
+  f(&CueValues::gobo);
+  f(&CueValues::frost);
+  f(&CueValues::prismRotationDeg);
+  f(&CueValues::bladeRotationDeg);
+  f(&CueValues::prism);
+  f(&CueValues::blades);
+  f(&CueValues::shutter);
+}
+
+std::string lowered(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
+
+std::string& paletteSlot(PaletteRefs& r, PaletteKind kind) {
+  switch (kind) {
+    case PaletteKind::Position: return r.position;
+    case PaletteKind::Color: return r.color;
+    case PaletteKind::Beam: return r.beam;
+    case PaletteKind::All: break;
+  }
+  return r.all;
+}
+
+const std::string& paletteSlot(const PaletteRefs& r, PaletteKind kind) {
+  return paletteSlot(const_cast<PaletteRefs&>(r), kind);
+}
+
+CueValues valuesOfKind(PaletteKind kind, const CueValues& v) {
+  CueValues out;
+  switch (kind) {
+    case PaletteKind::Position:
+      out.panDeg = v.panDeg;
+      out.tiltDeg = v.tiltDeg;
+      return out;
+    case PaletteKind::Color:
+      out.color = v.color;
+      for (const auto& [k, c] : v.cells)
+        if (c.color) out.cells[k].color = c.color;
+      return out;
+    case PaletteKind::Beam:
+      out = v;
+      out.palettes = {};
+      out.intensity.reset();
+      out.panDeg.reset();
+      out.tiltDeg.reset();
+      out.color.reset();
+      out.cells.clear();
+      return out;
+    case PaletteKind::All: break;
+  }
+  out = v;
+  out.palettes = {};
+  return out;
+}
+
+void clearValues(CueValues& v, const CueValues& mask) {
+  forEachValue([&](auto m) {
+    if (mask.*m) (v.*m).reset();
+  });
+  for (const auto& [k, c] : mask.cells) {
+    auto it = v.cells.find(k);
+    if (it == v.cells.end()) continue;
+    if (c.intensity) it->second.intensity.reset();
+    if (c.color) it->second.color.reset();
+    if (!it->second.intensity && !it->second.color) v.cells.erase(it);
+  }
+}
+
+void dropEqualValues(CueValues& v, const CueValues& ref) {
+  forEachValue([&](auto m) {
+    if (v.*m && ref.*m && *(v.*m) == *(ref.*m)) (v.*m).reset();
+  });
+  for (auto it = v.cells.begin(); it != v.cells.end();) {
+    auto r = ref.cells.find(it->first);
+    if (r != ref.cells.end()) {
+      if (it->second.intensity && it->second.intensity == r->second.intensity) it->second.intensity.reset();
+      if (it->second.color && it->second.color == r->second.color) it->second.color.reset();
+    }
+    it = !it->second.intensity && !it->second.color ? v.cells.erase(it) : std::next(it);
+  }
+}
+
+bool hasValues(const CueValues& v) {
+  CueValues bare = v;
+  bare.palettes = {};
+  return !(bare == CueValues{});
+}
+
+namespace {
+bool overlapping(const CueValues& a, const CueValues& b) {
+  bool any = false;
+  forEachValue([&](auto m) { any = any || (a.*m && b.*m); });
+  for (const auto& [k, c] : a.cells)
+    if (auto it = b.cells.find(k); it != b.cells.end())
+      any = any || (c.intensity && it->second.intensity) || (c.color && it->second.color);
+  return any;
+}
+}  // namespace
+
+bool applyPalette(const Show& show, CueValues& entry, int fixtureId, const PaletteDef& palette) {
+  const auto given = paletteValuesFor(show, palette, fixtureId);
+  if (!given) return false;
+  clearValues(entry, *given);
+  if (palette.kind == PaletteKind::All)
+    for (PaletteKind k : {PaletteKind::Position, PaletteKind::Color, PaletteKind::Beam}) {
+      std::string& slot = paletteSlot(entry.palettes, k);
+      const PaletteDef* other = slot.empty() ? nullptr : show.findPalette(slot);
+      const auto its = other ? paletteValuesFor(show, *other, fixtureId) : std::nullopt;
+      if (its && overlapping(*its, *given)) slot.clear();
+    }
+  paletteSlot(entry.palettes, palette.kind) = palette.name;
+  return true;
+}
+
+std::optional<size_t> paletteIndexNamed(const Show& show, const std::string& name) {
+  for (size_t i = 0; i < show.palettes.size(); ++i)
+    if (lowered(show.palettes[i].name) == lowered(name)) return i;
+  return std::nullopt;
+}
+
+std::optional<size_t> groupIndexNamed(const Show& show, const std::string& name) {
+  for (size_t i = 0; i < show.groups.size(); ++i)
+    if (lowered(show.groups[i].name) == lowered(name)) return i;
+  return std::nullopt;
+}
+
+std::vector<std::string> paletteUses(const Show& show, const std::string& name) {
+  std::vector<std::string> uses;
+  for (const CueList& l : show.cueLists)
+    for (const Cue& q : l.cues) {
+      bool used = false;
+      for (const auto& [id, v] : q.values)
+        used = used || v.palettes.all == name || v.palettes.position == name || v.palettes.color == name ||
+               v.palettes.beam == name;
+      if (used) uses.push_back("cue " + q.number + " of \"" + l.name + "\"");
+    }
+  return uses;
+}
+
+std::vector<std::string> groupUses(const Show& show, const std::string& name) {
+  std::vector<std::string> uses;
+  for (const PaletteDef& p : show.palettes)
+    if (p.groups.count(name)) uses.push_back("palette \"" + p.name + "\"");
+  for (const CueList& l : show.cueLists)
+    for (const Cue& q : l.cues) {
+      bool used = q.timing.fan && q.timing.fan->group == name;
+      for (const EffectDef& e : q.effects) used = used || e.group == name;
+      if (used) uses.push_back("cue " + q.number + " of \"" + l.name + "\"");
+    }
+  return uses;
 }
 
 std::string attributeOutsideKind(PaletteKind kind, const CueValues& v) {

@@ -30,6 +30,36 @@ std::optional<CueValues> paletteValuesFor(const Show& show, const PaletteDef& pa
 // reports them and loadShow refuses such a show.
 CueValues resolveValues(const Show& show, int fixtureId, const CueValues& values);
 
+// The slot of `refs` that holds palettes of `kind`.
+std::string& paletteSlot(PaletteRefs& refs, PaletteKind kind);
+const std::string& paletteSlot(const PaletteRefs& refs, PaletteKind kind);
+
+// The values of `v` that a palette of `kind` may hold (an "all" palette: every value). References
+// are not copied.
+CueValues valuesOfKind(PaletteKind kind, const CueValues& v);
+// Resets in `v` every value that `mask` sets (cells per cell and value).
+void clearValues(CueValues& v, const CueValues& mask);
+// Resets in `v` every value equal to the one `ref` sets (what a palette already gives).
+void dropEqualValues(CueValues& v, const CueValues& ref);
+// Whether `v` sets any value (references aside).
+bool hasValues(const CueValues& v);
+
+// Makes `entry` (a programmer's or a cue's values for one fixture) refer to `palette` in the slot
+// of its kind, as a console does when a palette is applied: the plain values the palette gives the
+// fixture leave the entry, so the palette shows; an "all" palette also replaces the kind
+// references whose values it overlaps. False (entry unchanged) when the palette has no value for
+// the fixture.
+bool applyPalette(const Show& show, CueValues& entry, int fixtureId, const PaletteDef& palette);
+
+// Case-insensitive look-ups (the command line's names): the index or empty.
+std::optional<size_t> paletteIndexNamed(const Show& show, const std::string& name);
+std::optional<size_t> groupIndexNamed(const Show& show, const std::string& name);
+
+// Where a palette is referred to ("cue 1 of Main", ...), and where a group is named (palettes,
+// fans, effects); empty when nowhere.
+std::vector<std::string> paletteUses(const Show& show, const std::string& name);
+std::vector<std::string> groupUses(const Show& show, const std::string& name);
+
 // The first attribute (its file name) of `values` that a palette of `kind` may not hold, or "".
 std::string attributeOutsideKind(PaletteKind kind, const CueValues& values);
 

@@ -99,6 +99,7 @@ struct CueValues {
 struct GroupDef {
   std::string name;
   std::vector<int> fixtures;  // fixture ids, in the group's order
+  bool operator==(const GroupDef&) const = default;
 };
 
 enum class PaletteKind { Position, Color, Beam, All };
@@ -110,6 +111,7 @@ struct PaletteDef {
   PaletteKind kind = PaletteKind::All;
   std::map<std::string, CueValues> groups;  // by group name
   std::map<int, CueValues> fixtures;        // by fixture id
+  bool operator==(const PaletteDef&) const = default;
 };
 
 // Delay and fade of one part of a cue (docs/show-format.md, "Timing"); unset ones are the cue's.

@@ -74,7 +74,8 @@ Result<std::string> setValues(ShowDocument& doc, const std::string& line, const 
       if (!given)
         return Error{"", "palette " + name, "the palette has no value for fixture " + std::to_string(id) +
                                                 "; nothing was changed"};
-      layValues(v, *given);
+      // A reference, not a copy: a cue recorded from the programmer follows the palette.
+      applyPalette(show, v, id, *p);
     }
     layValues(v, c.values);
     values[id] = v;
@@ -85,19 +86,26 @@ Result<std::string> setValues(ShowDocument& doc, const std::string& line, const 
   return "Set " + fixtures(ids) + ": " + describeValues(c);
 }
 
+std::string listWord(const ShowDocument& doc, size_t list) {
+  return doc.show().cueLists.size() > 1 ? " of cue list \"" + doc.show().cueLists[list].name + "\"" : "";
+}
+
 Result<std::string> recordOrUpdate(ShowDocument& doc, const std::string& line, const ParsedCommand& c) {
-  const CueList* list = doc.cueList();
+  const auto& lists = doc.show().cueLists;
+  const CueList* list = c.cueList < lists.size() ? &lists[c.cueList] : nullptr;
   const std::string listName = list ? list->name : "";
+  const std::string ref = (c.cueList > 0 ? std::to_string(c.cueList + 1) + "/" : "") + c.cueNumber;
+  const std::string in = listWord(doc, c.cueList);
   const bool exists = list && findCue(*list, c.cueNumber).ok();
   const bool empty = doc.programmer().values.empty();
   if (c.action == ParsedCommand::Action::Update) {
-    if (!exists) return Error{"", "cue " + c.cueNumber, "there is no cue " + c.cueNumber + " to update; 'record cue " + c.cueNumber + "' makes it"};
-    if (empty) return Error{"", "cue " + c.cueNumber, "the programmer is empty: there is nothing to update the cue with"};
+    if (!exists) return Error{"", "cue " + ref, "there is no cue " + c.cueNumber + in + " to update; 'record cue " + ref + "' makes it"};
+    if (empty) return Error{"", "cue " + ref, "the programmer is empty: there is nothing to update the cue with"};
     Status s = doc.run(std::make_unique<CommandLineEdit>(line, updateCue(listName, c.cueNumber)));
     if (!s) return s.error();
-    return "Updated cue " + c.cueNumber;
+    return "Updated cue " + c.cueNumber + in;
   }
-  if (exists) return Error{"", "cue " + c.cueNumber, "cue " + c.cueNumber + " exists; 'update cue " + c.cueNumber + "' changes it"};
+  if (exists) return Error{"", "cue " + ref, "cue " + c.cueNumber + in + " exists; 'update cue " + ref + "' changes it"};
   CueRecord r;
   r.list = listName;
   r.number = c.cueNumber;
@@ -106,7 +114,46 @@ Result<std::string> recordOrUpdate(ShowDocument& doc, const std::string& line, c
       if (compareCueNumbers(q.number, c.cueNumber) < 0) r.after = q.number;
   Status s = doc.run(std::make_unique<CommandLineEdit>(line, recordCue(std::move(r))));
   if (!s) return s.error();
-  return "Recorded cue " + c.cueNumber + (empty ? " (the programmer was empty: the cue changes nothing)" : "");
+  return "Recorded cue " + c.cueNumber + in + (empty ? " (the programmer was empty: the cue changes nothing)" : "");
+}
+
+Result<std::string> groupOrPalette(ShowDocument& doc, const std::string& line, const ParsedCommand& c) {
+  using A = ParsedCommand::Action;
+  const Show& show = doc.show();
+  std::unique_ptr<EditCommand> edit;
+  std::string done;
+  switch (c.action) {
+    case A::RecordPalette: {
+      const PaletteKind kind = c.paletteKind ? *c.paletteKind : paletteKindOfProgrammer(show, doc.programmer());
+      edit = recordPalette(c.name, c.paletteKind);
+      done = std::string("Recorded ") + paletteKindName(kind) + " palette \"" + c.name + "\"";
+      bool intensity = false;
+      for (const auto& [id, v] : doc.programmer().values) intensity = intensity || resolveValues(show, id, v).intensity;
+      if (intensity && kind != PaletteKind::All)
+        done += std::string(" (intensity left out: a ") + paletteKindName(kind) + " palette holds " +
+                paletteKindAttributes(kind) + ")";
+      break;
+    }
+    case A::UpdatePalette:
+      edit = updatePalette(c.name);
+      done = "Updated palette \"" + c.name + "\"";
+      break;
+    case A::DeletePalette:
+      edit = deletePalette(c.name);
+      done = "Deleted palette \"" + c.name + "\"";
+      break;
+    case A::RecordGroup:
+      edit = recordGroup(c.name, doc.selection);
+      done = "Recorded group \"" + c.name + "\" of " + fixtures(doc.selection);
+      break;
+    default:
+      edit = deleteGroup(c.name);
+      done = "Deleted group \"" + c.name + "\"";
+      break;
+  }
+  Status s = doc.run(std::make_unique<CommandLineEdit>(line, std::move(edit)));
+  if (!s) return s.error();
+  return done;
 }
 
 std::string cueName(const CueList& list, size_t index) {
@@ -144,12 +191,20 @@ Result<std::string> runCommandLine(ShowDocument& doc, const std::string& typed, 
     case ParsedCommand::Action::Update:
       return recordOrUpdate(doc, line, c);
     case ParsedCommand::Action::GotoCue: {
-      const CueList* list = doc.cueList();
+      const auto& lists = doc.show().cueLists;
+      const CueList* list = c.cueList < lists.size() ? &lists[c.cueList] : nullptr;
+      const std::string ref = (c.cueList > 0 ? std::to_string(c.cueList + 1) + "/" : "") + c.cueNumber;
       auto at = list ? findCue(*list, c.cueNumber) : Result<size_t>(Error{"", "", "the show has no cues"});
-      if (!at) return Error{"", "cue " + c.cueNumber, at.error().message};
-      if (!doc.gotoCue(*at, nowS)) return Error{"", "cue " + c.cueNumber, "playback could not go to the cue"};
-      return "Going to " + cueName(*list, *at);
+      if (!at) return Error{"", "cue " + ref, at.error().message};
+      if (!doc.listGotoCue(c.cueList, *at, nowS)) return Error{"", "cue " + ref, "playback could not go to the cue"};
+      return "Going to " + cueName(*list, *at) + listWord(doc, c.cueList);
     }
+    case ParsedCommand::Action::RecordPalette:
+    case ParsedCommand::Action::UpdatePalette:
+    case ParsedCommand::Action::DeletePalette:
+    case ParsedCommand::Action::RecordGroup:
+    case ParsedCommand::Action::DeleteGroup:
+      return groupOrPalette(doc, line, c);
     case ParsedCommand::Action::Go: {
       if (!doc.go(nowS)) return Error{"", "go", "there is no next cue"};
       const auto now = doc.currentCue();

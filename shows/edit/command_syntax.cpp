@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "shows/cue_number.h"
+#include "shows/palettes.h"
 
 namespace haze {
 
@@ -83,28 +84,17 @@ class Parser {
   Result<ParsedCommand> line() {
     ParsedCommand c;
     if (atEnd()) {
-      std::vector<std::string> start = {"group", "record", "update", "cue", "go", "clear"};
+      std::vector<std::string> start = {"group", "record", "update", "delete", "cue", "go", "clear"};
       for (const std::string& s : settingWords()) start.push_back(s);
       offer(start, "a fixture id");
       return c;
     }
     const std::string kw = word();
-    if (kw == "record" || kw == "update") {
-      ++i_;
-      if (Status s = keyword("cue", "'" + kw + "'"); !s) return s.error();
-      auto n = cueNumber(kw == "update", "'cue'");
-      if (!n) return n.error();
-      c.action = kw == "record" ? ParsedCommand::Action::Record : ParsedCommand::Action::Update;
-      c.cueNumber = *n;
-      if (Status s = end("the cue number"); !s) return s.error();
-      return c;
-    }
+    if (kw == "record" || kw == "update" || kw == "delete") return recordUpdateDelete(kw, c);
     if (kw == "cue") {
       ++i_;
-      auto n = cueNumber(true, "'cue'");
-      if (!n) return n.error();
+      if (Status s = cueRef(true, c); !s) return s.error();
       c.action = ParsedCommand::Action::GotoCue;
-      c.cueNumber = *n;
       if (Status s = end("the cue number"); !s) return s.error();
       return c;
     }
@@ -162,13 +152,89 @@ class Parser {
     return expected("the end of the line", after);
   }
 
-  Result<std::string> cueNumber(bool existing, const std::string& after) {
+  // CUE := [LIST '/'] NUMBER: the cue list by its number in the show (from 1; default the first),
+  // as consoles write "cue 2/5".
+  Status cueRef(bool existing, ParsedCommand& c) {
     std::vector<std::string> numbers;
-    if (existing && !show_.cueLists.empty())
-      for (const Cue& q : show_.cueLists.front().cues) numbers.push_back(q.number);
+    if (existing)
+      for (size_t l = 0; l < show_.cueLists.size(); ++l)
+        for (const Cue& q : show_.cueLists[l].cues)
+          numbers.push_back(l == 0 ? q.number : std::to_string(l + 1) + "/" + q.number);
     offer(numbers, "a cue number");
-    if (atEnd() || w_[i_].quoted || !isCueNumber(w_[i_].text)) return expected("a cue number", after);
-    return w_[i_++].text;
+    const std::string what = "a cue number (or LIST/NUMBER, as in 2/5)";
+    if (atEnd() || w_[i_].quoted) return expected(what, "'cue'");
+    std::string text = w_[i_].text;
+    const size_t slash = text.find('/');
+    if (slash != std::string::npos) {
+      const auto list = integerWord(CommandWord{text.substr(0, slash), false, 0});
+      if (!list || !isCueNumber(text.substr(slash + 1))) return expected(what, "'cue'");
+      if (*list < 1 || static_cast<size_t>(*list) > show_.cueLists.size()) {
+        std::string known;
+        for (size_t l = 0; l < show_.cueLists.size(); ++l) known += (l ? ", " : "") + quoteIfSpaced(show_.cueLists[l].name);
+        return unknown("there is no cue list " + std::to_string(*list) + "; the show has " +
+                       std::to_string(show_.cueLists.size()) + (known.empty() ? "" : " (" + known + ")"));
+      }
+      c.cueList = static_cast<size_t>(*list - 1);
+      text = text.substr(slash + 1);
+    } else if (!isCueNumber(text)) {
+      return expected(what, "'cue'");
+    }
+    c.cueNumber = text;
+    ++i_;
+    return Ok{};
+  }
+
+  // record (cue CUE | [KIND] palette NEW | group NEW), update (cue CUE | palette NAME),
+  // delete (palette NAME | group NAME).
+  Result<ParsedCommand> recordUpdateDelete(const std::string& kw, ParsedCommand& c) {
+    ++i_;
+    const bool rec = kw == "record", del = kw == "delete";
+    std::vector<std::string> next;
+    if (!del) next.push_back("cue");
+    next.push_back("palette");
+    if (kw != "update") next.push_back("group");
+    if (rec) next.insert(next.end(), {"position", "color", "beam", "all"});
+    offer(next, "");
+    const std::string what = del ? "'palette' or 'group'"
+                             : rec ? "'cue', 'palette', 'group' or a palette kind (position, color, beam, all)"
+                                   : "'cue' or 'palette'";
+    const std::string after = "'" + kw + "'";
+    if (atEnd()) return expected(what, after);
+    std::string sub = word();
+    if (rec && sub != "cue" && sub != "palette" && sub != "group") {
+      auto kind = paletteKindFromName(sub == "colour" ? "color" : sub);
+      if (!kind) return expected(what, after);
+      c.paletteKind = kind;
+      ++i_;
+      offer({"palette"}, "'palette'");
+      if (atEnd() || word() != "palette") return expected("'palette'", previous());
+      sub = "palette";
+    }
+    if (sub == "cue" && !del) {
+      ++i_;
+      if (Status s = cueRef(!rec, c); !s) return s.error();
+      c.action = rec ? ParsedCommand::Action::Record : ParsedCommand::Action::Update;
+      if (Status s = end("the cue number"); !s) return s.error();
+      return c;
+    }
+    if (sub == "palette" || (sub == "group" && kw != "update")) {
+      ++i_;
+      if (rec) {
+        offer({}, "the new " + sub + "'s name");
+        if (atEnd()) return expected("a name for the new " + sub, "'" + sub + "'");
+        for (; !atEnd(); ++i_) c.name += (c.name.empty() ? "" : " ") + w_[i_].text;
+      } else {
+        auto n = name(sub, "'" + sub + "'");
+        if (!n) return n.error();
+        c.name = sub == "palette" ? show_.palettes[*n].name : show_.groups[*n].name;
+        if (Status s = end("the " + sub + "'s name"); !s) return s.error();
+      }
+      using A = ParsedCommand::Action;
+      c.action = sub == "palette" ? (rec ? A::RecordPalette : del ? A::DeletePalette : A::UpdatePalette)
+                                  : (rec ? A::RecordGroup : A::DeleteGroup);
+      return c;
+    }
+    return expected(what, after);
   }
 
   // selection := term (('+' | '-') term)*
@@ -310,7 +376,7 @@ class Parser {
         what += "'@', 'palette' or an attribute (pan, tilt, zoom, iris, frost)";
         if (!c.selection && !any)
           return unknown("unknown command '" + w_[i_].text + "'; expected " + what +
-                         ", or record, update, cue, go, clear");
+                         ", or record, update, delete, cue, go, clear");
         return expected(what, previous());
       }
       any = true;

@@ -22,6 +22,11 @@ struct ParsedCommand {
     GotoCue, // cue N
     Go,
     Clear,
+    RecordPalette,  // record [KIND] palette NAME
+    UpdatePalette,  // update palette NAME
+    DeletePalette,  // delete palette NAME
+    RecordGroup,    // record group NAME
+    DeleteGroup,    // delete group NAME
   };
   Action action = Action::None;
   // The fixtures the line names, sorted; empty when the line names none (Set then uses the
@@ -31,6 +36,11 @@ struct ParsedCommand {
   std::vector<std::string> palettes;  // palette names as in the show
   CueValues values;
   std::string cueNumber;  // Record, Update, GotoCue
+  size_t cueList = 0;     // their cue list: an index into Show::cueLists ("cue 2/5": 1)
+  // RecordPalette, RecordGroup: the new name as typed; UpdatePalette, DeletePalette,
+  // DeleteGroup: the existing one's name as in the show.
+  std::string name;
+  std::optional<PaletteKind> paletteKind;  // RecordPalette: the kind typed, if any
 };
 
 // The line split into words: '@' and '+' are words of their own wherever they are written, a '-'

@@ -90,6 +90,26 @@ struct CueTimes {
 };
 std::unique_ptr<EditCommand> setCueTimes(std::string list, std::string number, CueTimes times);
 
+// --- Groups and palettes (docs/gui.md, "Console commands"). Names are compared in any case. ---
+
+// A new palette from the programmer: for each fixture it holds, its values of `kind` (palettes
+// resolved). No kind: position, colour or beam when the programmer holds values of that kind
+// alone, else "all". The fixtures recorded then refer to the new palette in the programmer.
+std::unique_ptr<EditCommand> recordPalette(std::string name, std::optional<PaletteKind> kind);
+// Lays the programmer's values of the palette's kind into its per-fixture entries (only what
+// differs from what it gives now); the fixtures then refer to it in the programmer.
+std::unique_ptr<EditCommand> updatePalette(std::string name);
+// Refused while a cue or the programmer refers to the palette.
+std::unique_ptr<EditCommand> deletePalette(std::string name);
+// A new group of `fixtures`, in that order.
+std::unique_ptr<EditCommand> recordGroup(std::string name, std::vector<int> fixtures);
+// Refused while a palette, a fan or an effect names the group.
+std::unique_ptr<EditCommand> deleteGroup(std::string name);
+// What recordPalette without a kind picks for this programmer, and the attributes a kind holds
+// (for messages).
+PaletteKind paletteKindOfProgrammer(const Show& show, const Programmer& programmer);
+std::string paletteKindAttributes(PaletteKind kind);
+
 // --- The show. ---
 
 // Checked as the show format does: scattering and absorption >= 0, phase hazy|isotropic|hg,

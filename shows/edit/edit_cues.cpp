@@ -9,6 +9,7 @@
 #include "shows/edit/edit_commands.h"
 #include "shows/edit/edit_cue_number.h"
 #include "shows/edit/edit_util.h"
+#include "shows/palettes.h"
 
 namespace haze {
 
@@ -63,18 +64,37 @@ void compareField(const Attributes& before, const CueValues& p, Same same, Diffe
   check(&CueValues::shutter, p.shutter, p.shutter && *p.shutter == before.shutter);
 }
 
-// Applies `fold` to one fixture: programmer values that differ from `before` are set in `cue`,
-// equal ones are removed from it (tracking then gives the same value).
-void fold(const Attributes& before, const CueValues& p, CueValues& cue) {
+// Folds one fixture's programmer entry `p` into its values in `cue`. Palette references are
+// always taken (they are what the cue follows when the palette changes; the plain values they
+// replace leave the cue). A plain value that differs from `before` is set; one equal to it is
+// removed from the cue (tracking then gives the same value), unless a palette of the cue would
+// give that attribute instead.
+void fold(const Show& show, int id, const Attributes& before, const CueValues& p, CueValues& cue) {
+  for (PaletteKind k : {PaletteKind::All, PaletteKind::Position, PaletteKind::Color, PaletteKind::Beam})
+    if (const std::string& name = paletteSlot(p.palettes, k); !name.empty())
+      if (const PaletteDef* pal = show.findPalette(name)) applyPalette(show, cue, id, *pal);
+  CueValues refsOnly;
+  refsOnly.palettes = cue.palettes;
+  const CueValues fromPalettes = resolveValues(show, id, refsOnly);
   compareField(
-      before, p, [&](auto member) { (cue.*member).reset(); }, [&](auto member) { cue.*member = p.*member; });
+      before, p,
+      [&](auto member) {
+        if (fromPalettes.*member)
+          cue.*member = p.*member;
+        else
+          (cue.*member).reset();
+      },
+      [&](auto member) { cue.*member = p.*member; });
   // Cells per cell and value (docs/cells.md), as the fixture's own values.
   for (const auto& [k, pc] : p.cells) {
     if (k < 0) continue;
     const CellAttributes b = cellAttributes(before, static_cast<size_t>(k));
+    const auto under = fromPalettes.cells.find(k);
+    const bool palIntensity = under != fromPalettes.cells.end() && under->second.intensity;
+    const bool palColor = under != fromPalettes.cells.end() && under->second.color;
     CellValues& c = cue.cells[k];
-    if (pc.intensity) c.intensity = *pc.intensity == b.intensity ? std::nullopt : pc.intensity;
-    if (pc.color) c.color = *pc.color == b.color ? std::nullopt : pc.color;
+    if (pc.intensity) c.intensity = *pc.intensity == b.intensity && !palIntensity ? std::nullopt : pc.intensity;
+    if (pc.color) c.color = *pc.color == b.color && !palColor ? std::nullopt : pc.color;
     if (!c.intensity && !c.color) cue.cells.erase(k);
   }
 }
@@ -118,7 +138,7 @@ class RecordCue final : public EditCommand {
       auto b = before.find(id);
       if (b == before.end()) continue;  // not a fixture of the show
       CueValues v;
-      fold(b->second, p, v);
+      fold(t.show, id, b->second, p, v);
       if (!(v == CueValues{})) cue.values[id] = v;
     }
     createdList_ = !l;
@@ -184,7 +204,7 @@ class UpdateCue final : public ChangeCue {
       auto b = before.find(id);
       if (b == before.end()) continue;
       CueValues v = cue.values.count(id) ? cue.values.at(id) : CueValues{};
-      fold(b->second, p, v);
+      fold(t.show, id, b->second, p, v);
       if (v == CueValues{})
         cue.values.erase(id);
       else

@@ -4,12 +4,14 @@
 
 #include <cassert>
 
+#include "shows/palettes.h"
+
 namespace haze {
 
-StageState withProgrammer(StageState state, const Programmer& programmer) {
+StageState withProgrammer(StageState state, const Programmer& programmer, const Show& show) {
   for (const auto& [id, v] : programmer.values) {
     auto it = state.find(id);
-    if (it != state.end()) overlayValues(it->second, v);
+    if (it != state.end()) overlayValues(it->second, resolveValues(show, id, v));
   }
   return state;
 }

@@ -15,15 +15,18 @@
 
 namespace haze {
 
-// Like a console's programmer: per fixture, the attributes the designer has set by hand. They win
-// over cue playback on stage, and Record/Update take them into cues.
+// Like a console's programmer: per fixture, the attributes the designer has set by hand and the
+// palettes applied (CueValues::palettes: references, resolved for the stage, so a palette
+// updated while it is in the programmer shows at once). They win over cue playback on stage, and
+// Record/Update take them into cues, references as references.
 struct Programmer {
   std::map<int, CueValues> values;  // by fixture id; unset attributes leave playback alone
   bool operator==(const Programmer&) const = default;
 };
 
-// What the stage shows: the playback state with the programmer laid over it.
-StageState withProgrammer(StageState state, const Programmer& programmer);
+// What the stage shows: the playback state with the programmer laid over it (its palette
+// references resolved against `show`).
+StageState withProgrammer(StageState state, const Programmer& programmer, const Show& show);
 
 // Everything a command may read or change. The profiles are read-only: commands need them for
 // DMX footprints, modes and tracked states.

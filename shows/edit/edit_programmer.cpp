@@ -5,6 +5,7 @@
 
 #include "shows/edit/edit_commands.h"
 #include "shows/edit/edit_util.h"
+#include "shows/palettes.h"
 
 namespace haze {
 
@@ -12,6 +13,9 @@ using edit::fixturePlace;
 using edit::userError;
 
 namespace {
+
+// The order palettes are applied in (and resolved in, shows/palettes.h).
+constexpr PaletteKind kSlotOrder[] = {PaletteKind::All, PaletteKind::Position, PaletteKind::Color, PaletteKind::Beam};
 
 using Entries = std::map<int, std::optional<CueValues>>;
 
@@ -53,15 +57,38 @@ class SetProgrammer final : public EditCommand {
   }
   Status apply(EditTarget& t) override {
     if (values_.empty()) return userError("", "nothing to set; expected at least one fixture");
+    if (absorbed_) {  // redo of a folded drag: it ends where the drag's last step did
+      putEntries(t.programmer, after_);
+      return Ok{};
+    }
     std::vector<int> ids;
     for (const auto& [id, v] : values_) {
       if (!t.show.findFixture(id)) return userError(fixturePlace(id), "no fixture with id " + std::to_string(id));
       if (!finiteValues(v)) return userError(fixturePlace(id), "attribute values must be finite numbers");
       ids.push_back(id);
     }
+    // Everything is checked before the programmer changes: the palettes exist, are of their
+    // slot's kind and give every fixture a value.
+    for (const auto& [id, v] : values_)
+      for (PaletteKind k : kSlotOrder) {
+        const std::string& name = paletteSlot(v.palettes, k);
+        if (name.empty()) continue;
+        const PaletteDef* pal = t.show.findPalette(name);
+        if (!pal) return userError("palette " + name, "no palette is named \"" + name + "\"");
+        if (pal->kind != k)
+          return userError("palette " + name, std::string("the palette is a ") + paletteKindName(pal->kind) +
+                                                  " palette, not a " + paletteKindName(k) + " one");
+        if (!paletteValuesFor(t.show, *pal, id))
+          return userError("palette " + name, "the palette has no value for fixture " + std::to_string(id) +
+                                                  "; nothing was changed");
+      }
     before_ = entriesOf(t.programmer, ids);
     for (const auto& [id, v] : values_) {
       CueValues& p = t.programmer.values[id];
+      // Palettes first, then the plain values over them (they win, as in a cue).
+      for (PaletteKind k : kSlotOrder)
+        if (const std::string& name = paletteSlot(v.palettes, k); !name.empty())
+          applyPalette(t.show, p, id, *t.show.findPalette(name));
       if (v.intensity) p.intensity = v.intensity;
       if (v.panDeg) p.panDeg = v.panDeg;
       if (v.tiltDeg) p.tiltDeg = v.tiltDeg;
@@ -91,14 +118,14 @@ class SetProgrammer final : public EditCommand {
     for (const auto& [id, v] : after_)
       if (!n->after_.count(id)) return false;
     after_ = n->after_;
-    values_ = n->values_;  // redo of the folded step must end where the last drag step did
-    for (auto& [id, v] : values_) v = after_.at(id).value_or(CueValues{});
+    absorbed_ = true;
     return true;
   }
 
  private:
   std::map<int, CueValues> values_;
   Entries before_, after_;
+  bool absorbed_ = false;
 };
 
 class ClearProgrammer final : public EditCommand {

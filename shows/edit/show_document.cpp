@@ -77,7 +77,9 @@ void ShowDocument::changed() {
   // Fixtures that no longer exist leave the selection.
   std::erase_if(selection, [&](int id) { return show_.findFixture(id) == nullptr; });
   // The player holds references into the cue lists and snapshots of their states.
-  if (!sameCues(show_.cueLists, playerCues_)) resetPlayer();
+  // Palettes and groups are resolved as cues play, so a changed one changes what the cues show.
+  if (!sameCues(show_.cueLists, playerCues_) || show_.palettes != playerPalettes_ || show_.groups != playerGroups_)
+    resetPlayer();
 }
 
 Status ShowDocument::run(std::unique_ptr<EditCommand> command, bool merge) {
@@ -193,6 +195,19 @@ Result<std::string> ShowDocument::recordCue(const std::string& afterNumber, cons
   return at ? list->cues[*at + 1].number : list->cues.back().number;
 }
 
+Result<std::string> ShowDocument::recordCueInList(size_t list, const std::string& label) {
+  if (list >= show_.cueLists.size()) return Error{"", "record", "the show has no cue list " + std::to_string(list + 1)};
+  CueRecord r;
+  r.list = show_.cueLists[list].name;
+  if (!show_.cueLists[list].cues.empty()) r.after = show_.cueLists[list].cues.back().number;
+  r.label = label;
+  const size_t before = show_.cueLists[list].cues.size();
+  Status s = run(haze::recordCue(std::move(r)));
+  if (!s) return s.error();
+  if (show_.cueLists[list].cues.size() != before + 1) return Error{"", "record", "the cue list did not grow"};
+  return show_.cueLists[list].cues.back().number;
+}
+
 Result<std::string> ShowDocument::recordLook(std::map<int, CueValues> look, const std::string& label) {
   if (look.empty()) return Error{"", "record", "no fixture in the look: nothing to record"};
   CueRecord r;
@@ -252,6 +267,8 @@ void ShowDocument::resetPlayer() {
   }
   playbacks_.reset();
   playerCues_ = show_.cueLists;
+  playerPalettes_ = show_.palettes;
+  playerGroups_ = show_.groups;
   playbacks_ = std::make_unique<Playbacks>(show_, profiles_);
   for (size_t i = 0; i < masters.size() && i < playbacks_->size(); ++i) playbacks_->setMaster(i, masters[i]);
   // Jumps in the old start order give each attribute to the list that had it (the fades are over).
@@ -267,6 +284,9 @@ const CueList* ShowDocument::cueList() const { return show_.cueLists.empty() ? n
 bool ShowDocument::listGo(size_t list, double nowS) { return playbacks_ && playbacks_->go(list, nowS); }
 bool ShowDocument::listBack(size_t list, double nowS) { return playbacks_ && playbacks_->back(list, nowS); }
 bool ShowDocument::gotoCue(size_t index, double nowS) { return playbacks_ && playbacks_->gotoCue(0, index, nowS); }
+bool ShowDocument::listGotoCue(size_t list, size_t index, double nowS) {
+  return playbacks_ && playbacks_->gotoCue(list, index, nowS);
+}
 bool ShowDocument::jumpTo(size_t index, double nowS) { return playbacks_ && playbacks_->jumpTo(0, index, nowS); }
 
 std::optional<size_t> ShowDocument::listCue(size_t list) const {
@@ -304,7 +324,7 @@ StageState ShowDocument::stageState(double nowS) {
   // Fixtures placed or deleted since the player was built: at their defaults, or gone.
   for (const auto& [id, a] : defaultState(show_)) s.try_emplace(id, a);
   std::erase_if(s, [&](const auto& entry) { return show_.findFixture(entry.first) == nullptr; });
-  return withProgrammer(std::move(s), programmer_);
+  return withProgrammer(std::move(s), programmer_, show_);
 }
 
 }  // namespace haze

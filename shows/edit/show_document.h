@@ -73,6 +73,8 @@ class ShowDocument {
   // Records the programmer into a new cue of the first list after cue `afterNumber` ("" = at the
   // end) and returns its number.
   Result<std::string> recordCue(const std::string& afterNumber = "", const std::string& label = "");
+  // The same at the end of cue list `list` (an index into show().cueLists).
+  Result<std::string> recordCueInList(size_t list, const std::string& label = "");
   // The same from a look (fixture id -> values, e.g. what DMX put on stage) instead of the
   // programmer: a new cue at the end of the list, one undo step.
   Result<std::string> recordLook(std::map<int, CueValues> look, const std::string& label = "");
@@ -102,6 +104,7 @@ class ShowDocument {
   size_t listCount() const { return show_.cueLists.size(); }
   bool listGo(size_t list, double nowS);
   bool listBack(size_t list, double nowS);
+  bool listGotoCue(size_t list, size_t index, double nowS);
   std::optional<size_t> listCue(size_t list) const;
   double listFadeProgress(size_t list, double nowS) const;
   void setListMaster(size_t list, double level);
@@ -128,6 +131,8 @@ class ShowDocument {
 
   std::unique_ptr<Playbacks> playbacks_;
   std::vector<CueList> playerCues_;  // the cue lists the players were built on
+  std::vector<PaletteDef> playerPalettes_;  // and the palettes and groups they resolve
+  std::vector<GroupDef> playerGroups_;
   double lastNowS_ = 0.0;
 };
 

@@ -18,6 +18,7 @@
 
 #include "shows/edit/command_run.h"
 #include "shows/edit/command_syntax.h"
+#include "shows/palettes.h"
 #include "shows/playback.h"
 #include "shows/show_json.h"
 
@@ -62,10 +63,19 @@ std::unique_ptr<ShowDocument> openShow() {
   return d ? std::move(*d) : nullptr;
 }
 
+// What the programmer gives a fixture: its values with its palette references resolved.
 std::optional<float> programmed(const ShowDocument& d, int id, std::optional<float> CueValues::*member) {
   auto it = d.programmer().values.find(id);
-  return it == d.programmer().values.end() ? std::nullopt : it->second.*member;
+  return it == d.programmer().values.end() ? std::nullopt : resolveValues(d.show(), id, it->second).*member;
 }
+
+const PaletteRefs& refsOf(const ShowDocument& d, int id) {
+  static const PaletteRefs none;
+  auto it = d.programmer().values.find(id);
+  return it == d.programmer().values.end() ? none : it->second.palettes;
+}
+
+const PaletteDef* paletteOf(const ShowDocument& d, const std::string& name) { return d.show().findPalette(name); }
 
 std::vector<int> range(int a, int b) {
   std::vector<int> v;
@@ -85,7 +95,7 @@ void expectProgrammer(const ShowDocument& d, const std::vector<int>& ids, std::o
 }
 
 struct Example {
-  std::string setup;  // run first (context the line needs)
+  std::string setup;  // run first (context the line needs; lines separated by "; ")
   bool undoStep;      // the line is one undo step
   std::function<void(ShowDocument&)> check;
 };
@@ -120,11 +130,16 @@ std::map<std::string, Example> examples() {
   e["1 thru 3 palette Centre"] = {"", true, [](ShowDocument& d) {
                                     expectProgrammer(d, {1, 2, 3}, &V::panDeg, 10.0f);
                                     expectProgrammer(d, {1, 2, 3}, &V::tiltDeg, 20.0f);
+                                    for (int id : {1, 2, 3}) {
+                                      EXPECT_EQ(refsOf(d, id).position, "Centre") << id;
+                                      EXPECT_FALSE(d.programmer().values.at(id).panDeg) << id;  // a reference, not a copy
+                                    }
                                   }};
   e["group 2 palette 2 @ 60"] = {"", true, [](ShowDocument& d) {
                                    expectProgrammer(d, range(7, 12), &V::intensity, 0.6f);
                                    for (int id : range(7, 12)) {
-                                     const CueValues& v = d.programmer().values.at(id);
+                                     EXPECT_EQ(refsOf(d, id).color, "Warm");
+                                     const CueValues v = resolveValues(d.show(), id, d.programmer().values.at(id));
                                      ASSERT_TRUE(v.color);
                                      EXPECT_FLOAT_EQ(v.color->y, 0.8f);
                                      EXPECT_FLOAT_EQ(v.color->z, 0.6f);
@@ -146,6 +161,64 @@ std::map<std::string, Example> examples() {
                          EXPECT_EQ(c.number, "5");
                          EXPECT_FLOAT_EQ(*c.values.at(7).intensity, 0.9f);
                        }};
+  e["record cue 2/5"] = {"12 @ 80", true, [](ShowDocument& d) {
+                           const CueList& specials = d.show().cueLists.at(1);
+                           ASSERT_EQ(specials.cues.size(), 2u);
+                           EXPECT_EQ(specials.cues[1].number, "5");
+                           EXPECT_FLOAT_EQ(*specials.cues[1].values.at(12).intensity, 0.8f);
+                           EXPECT_EQ(d.cueList()->cues.size(), 3u);  // Main unchanged
+                         }};
+  e["update cue 2/1"] = {"12 @ 90", true, [](ShowDocument& d) {
+                           EXPECT_FLOAT_EQ(*d.show().cueLists.at(1).cues[0].values.at(12).intensity, 0.9f);
+                         }};
+  e["cue 2/1"] = {"", false, [](ShowDocument& d) {
+                    EXPECT_EQ(d.listCue(1), std::optional<size_t>(0));
+                    EXPECT_EQ(d.currentCue(), std::nullopt);
+                  }};
+  e["record palette Left"] = {"1 thru 3 pan -40 tilt 15", true, [](ShowDocument& d) {
+                                const PaletteDef* p = paletteOf(d, "Left");
+                                ASSERT_TRUE(p);
+                                EXPECT_EQ(p->kind, PaletteKind::Position);
+                                ASSERT_EQ(p->fixtures.size(), 3u);
+                                for (int id : {1, 2, 3}) {
+                                  EXPECT_FLOAT_EQ(*p->fixtures.at(id).panDeg, -40.0f);
+                                  EXPECT_FLOAT_EQ(*p->fixtures.at(id).tiltDeg, 15.0f);
+                                  EXPECT_EQ(refsOf(d, id).position, "Left");
+                                }
+                                expectProgrammer(d, {1, 2, 3}, &V::panDeg, -40.0f);
+                              }};
+  e["record beam palette Wide"] = {"group Front zoom 40 @ 50", true, [](ShowDocument& d) {
+                                     const PaletteDef* p = paletteOf(d, "Wide");
+                                     ASSERT_TRUE(p);
+                                     EXPECT_EQ(p->kind, PaletteKind::Beam);
+                                     ASSERT_EQ(p->fixtures.size(), 6u);
+                                     EXPECT_FLOAT_EQ(*p->fixtures.at(4).zoomDeg, 40.0f);
+                                     EXPECT_FALSE(p->fixtures.at(4).intensity);
+                                     expectProgrammer(d, range(1, 6), &V::intensity, 0.5f);  // still in the programmer
+                                   }};
+  e["update palette Centre"] = {"1 palette Centre pan 12", true, [](ShowDocument& d) {
+                                  const PaletteDef* p = paletteOf(d, "Centre");
+                                  ASSERT_TRUE(p);
+                                  ASSERT_EQ(p->fixtures.size(), 1u);
+                                  EXPECT_FLOAT_EQ(*p->fixtures.at(1).panDeg, 12.0f);
+                                  EXPECT_FALSE(p->fixtures.at(1).tiltDeg);  // the group's 20 already
+                                  EXPECT_FLOAT_EQ(*paletteValuesFor(d.show(), *p, 2)->panDeg, 10.0f);
+                                  EXPECT_EQ(refsOf(d, 1).position, "Centre");
+                                  EXPECT_FALSE(d.programmer().values.at(1).panDeg);
+                                }};
+  e["delete palette Narrow"] = {"", true, [](ShowDocument& d) {
+                                  EXPECT_FALSE(paletteOf(d, "Narrow"));
+                                  EXPECT_EQ(d.show().palettes.size(), 2u);
+                                }};
+  e["record group Odd"] = {"1 + 3 + 5", true, [](ShowDocument& d) {
+                             const GroupDef* g = d.show().findGroup("Odd");
+                             ASSERT_TRUE(g);
+                             EXPECT_EQ(g->fixtures, (std::vector<int>{1, 3, 5}));
+                           }};
+  e["delete group Odd"] = {"1 + 3 + 5; record group Odd", true, [](ShowDocument& d) {
+                             EXPECT_FALSE(d.show().findGroup("Odd"));
+                             EXPECT_EQ(d.show().groups.size(), 2u);
+                           }};
   e["cue 5"] = {"", false, [](ShowDocument& d) { EXPECT_EQ(d.currentCue(), std::optional<size_t>(1)); }};
   e["go"] = {"", false, [](ShowDocument& d) { EXPECT_EQ(d.currentCue(), std::optional<size_t>(0)); }};
   e["clear"] = {"1 @ 50", true, [](ShowDocument& d) {
@@ -167,8 +240,10 @@ TEST(CommandLine, EveryDocExampleDoesWhatItSays) {
     ASSERT_NE(it, checks.end()) << "docs/gui.md example without a check here";
     auto d = openShow();
     ASSERT_TRUE(d);
-    if (!it->second.setup.empty()) {
-      ASSERT_TRUE(runCommandLine(*d, it->second.setup, 0.0).ok());
+    std::stringstream setup(it->second.setup);
+    for (std::string part; std::getline(setup, part, ';');) {
+      auto ran = runCommandLine(*d, part, 0.0);
+      ASSERT_TRUE(ran.ok()) << part << ": " << ran.error().str();
     }
     const Programmer before = d->programmer();
     const std::string showBefore = showToText(d->show());
@@ -324,5 +399,112 @@ TEST(CommandLine, SelectionAloneAndSettingsOnTheCurrentSelection) {
   EXPECT_EQ(describeIds({1, 2, 3, 5, 7, 8, 9}), "1-3, 5, 7-9");
 }
 
+// The point of palettes: a cue recorded from the programmer with a palette keeps the reference, so
+// updating the palette (here from the command line too) reaches it; a cue recorded with the same
+// values typed plainly does not follow.
+TEST(CommandLine, ACueRecordedWithAPaletteFollowsTheUpdatedPalette) {
+  auto d = openShow();
+  ASSERT_TRUE(d);
+  auto run = [&](const std::string& line) {
+    auto r = runCommandLine(*d, line, 0.0);
+    EXPECT_TRUE(r.ok()) << line << ": " << (r ? "" : r.error().str());
+  };
+  run("1 thru 3 palette Centre @ 50");
+  run("record cue 7");
+  run("clear");
+  run("4 pan 10 tilt 20 @ 50");  // Centre's values for the Front group, typed
+  run("record cue 8");
+  run("clear");
+  const CueList* main = d->cueList();
+  ASSERT_EQ(main->cues.size(), 5u);
+  const Cue& seven = main->cues[2];
+  ASSERT_EQ(seven.number, "7");
+  for (int id : {1, 2, 3}) {
+    EXPECT_EQ(seven.values.at(id).palettes.position, "Centre") << id;
+    EXPECT_FALSE(seven.values.at(id).panDeg) << id;
+  }
+  EXPECT_TRUE(main->cues[3].values.at(4).palettes.empty());
+  // On stage at cue 7 before the update.
+  ASSERT_TRUE(d->jumpTo(2, 0.0));
+  EXPECT_FLOAT_EQ(d->stageState(0.0).at(2).panDeg, 10.0f);
+
+  run("1 thru 4 pan 33");
+  run("update palette Centre");
+  run("clear");
+  EXPECT_EQ(d->history().undoLabel(), "Command \"clear\"");
+  const StageState at7 = trackedState(d->show(), d->profiles(), *d->cueList(), 2);
+  const StageState at8 = trackedState(d->show(), d->profiles(), *d->cueList(), 3);
+  for (int id : {1, 2, 3}) {
+    EXPECT_FLOAT_EQ(at7.at(id).panDeg, 33.0f) << id;
+    EXPECT_FLOAT_EQ(at7.at(id).tiltDeg, 20.0f) << id;
+    EXPECT_FLOAT_EQ(at8.at(id).panDeg, 33.0f) << id;  // tracks into cue 8
+  }
+  EXPECT_FLOAT_EQ(at8.at(4).panDeg, 10.0f);  // recorded plainly: does not follow
+  EXPECT_FLOAT_EQ(at7.at(5).panDeg, 0.0f);   // in no cue
+  // The stage follows at once: the cue on stage shows the new palette without a new GO.
+  EXPECT_FLOAT_EQ(d->stageState(1.0).at(2).panDeg, 33.0f);
+
+  // The file keeps the reference, so the update reaches the cue after a save and reload too.
+  const std::string text = showToText(d->show());
+  ShowParse reread = parseShowText(text, kShow);
+  ASSERT_TRUE(reread.problems.empty()) << reread.problems.front().str();
+  EXPECT_EQ(reread.show.cueLists[0].cues[2].values.at(1).palettes.position, "Centre");
+  EXPECT_FLOAT_EQ(*reread.show.findPalette("Centre")->fixtures.at(1).panDeg, 33.0f);
+
+  // Undoing the palette update (past "clear") takes the cue back with it.
+  ASSERT_TRUE(d->undo());
+  ASSERT_TRUE(d->undo());
+  EXPECT_FLOAT_EQ(trackedState(d->show(), d->profiles(), *d->cueList(), 2).at(1).panDeg, 10.0f);
+}
+
+TEST(CommandLine, PaletteAndGroupEditsRefuseWhatTheyCannotDo) {
+  auto d = openShow();
+  ASSERT_TRUE(d);
+  const std::string before = showToText(d->show());
+  auto refused = [&](const std::string& line, const std::string& says) {
+    SCOPED_TRACE(line);
+    const size_t steps = d->history().undoSteps();
+    auto r = runCommandLine(*d, line, 0.0);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().str(), says);
+    EXPECT_EQ(showToText(d->show()), before);
+    EXPECT_EQ(d->history().undoSteps(), steps);
+  };
+  // An empty programmer records no palette.
+  refused("record palette Blue",
+          "palette Blue: the programmer is empty: nothing to put in the palette; set values first (\"1 thru 4 pan 30\")");
+  refused("update palette Centre",
+          "palette Centre: the programmer is empty: nothing to put in the palette; set values first (\"1 thru 4 pan 30\")");
+  // Nothing selected: no group.
+  refused("record group Odd",
+          "group Odd: no fixture is selected; a group is recorded from the selection (\"1 thru 6\" first)");
+  // A palette the programmer refers to stays.
+  ASSERT_TRUE(runCommandLine(*d, "1 palette Narrow", 0.0).ok());
+  const std::string withNarrow = showToText(d->show());
+  auto r = runCommandLine(*d, "delete palette Narrow", 0.0);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().str(), "palette Narrow: the programmer refers to the palette (fixture 1); clear it first (nothing was deleted)");
+  EXPECT_EQ(showToText(d->show()), withNarrow);
+  // A colour palette cannot take intensity alone.
+  ASSERT_TRUE(runCommandLine(*d, "clear", 0.0).ok());
+  ASSERT_TRUE(runCommandLine(*d, "2 @ 40", 0.0).ok());
+  r = runCommandLine(*d, "record colour palette Dim", 0.0);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().str(), "palette Dim: the programmer holds no color values (colour, cell colours); nothing was changed");
+  // Without a kind, intensity alone makes an "all" palette; with a position it is left out, and said so.
+  ASSERT_TRUE(runCommandLine(*d, "record palette Dim", 0.0).ok());
+  EXPECT_EQ(d->show().findPalette("Dim")->kind, PaletteKind::All);
+  ASSERT_TRUE(runCommandLine(*d, "clear", 0.0).ok());
+  auto said = runCommandLine(*d, "3 @ 40 pan 5", 0.0);
+  ASSERT_TRUE(said.ok());
+  said = runCommandLine(*d, "record palette \"Low left\"", 0.0);
+  ASSERT_TRUE(said.ok()) << said.error().str();
+  EXPECT_EQ(*said, "Recorded position palette \"Low left\" (intensity left out: a position palette holds pan, tilt)");
+  // The new palettes are names the rest of the line knows, in any case.
+  ASSERT_TRUE(runCommandLine(*d, "clear", 0.0).ok());
+  ASSERT_TRUE(runCommandLine(*d, "3 palette \"low left\"", 0.0).ok());
+  EXPECT_FLOAT_EQ(*programmed(*d, 3, &CueValues::panDeg), 5.0f);
+  EXPECT_EQ(refsOf(*d, 3).position, "Low left");
+}
 }  // namespace
 }  // namespace haze

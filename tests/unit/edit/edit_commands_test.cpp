@@ -223,7 +223,7 @@ TEST(EditProgrammer, SetLaysValuesOverAndClearTakesThemOut) {
   expectRefused(b, setProgrammer({{3, CueValues{.panDeg = 1.0f}}}), "3");
   expectRefused(b, setProgrammer({{1, CueValues{.panDeg = INFINITY}}}), "finite");
   // On stage the programmer wins over playback.
-  StageState stage = withProgrammer(trackedState(b.show, b.profiles, b.main(), 1), b.programmer);
+  StageState stage = withProgrammer(trackedState(b.show, b.profiles, b.main(), 1), b.programmer, b.show);
   EXPECT_EQ(stage.at(1).panDeg, 10.0f);
   EXPECT_EQ(stage.at(1).intensity, 1.0f);  // from cue 1, tracked
   EXPECT_EQ(stage.at(1).gobo, "Stars");
@@ -264,7 +264,7 @@ TEST(EditCues, RecordStoresOnlyWhatDiffersFromTheTrackedStateBefore) {
   EXPECT_EQ(c.values.at(5), CueValues{.color = glm::vec3(1, 0, 0)});
   // Playing the new cue gives exactly the programmer's look.
   StageState played = trackedState(b.show, b.profiles, b.main(), 2);
-  StageState wanted = withProgrammer(trackedState(b.show, b.profiles, b.main(), 1), b.programmer);
+  StageState wanted = withProgrammer(trackedState(b.show, b.profiles, b.main(), 1), b.programmer, b.show);
   EXPECT_EQ(played, wanted);
   EXPECT_EQ(b.history.undoLabel(), "Record cue 3");
 }
