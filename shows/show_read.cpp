@@ -467,15 +467,22 @@ bool readFixtureKey(Reader& r, const std::string& key, const std::string& p, int
   return true;
 }
 
+// A key counting from 1 ("1" .. "4096", no leading zero), as cells and hazers are numbered; 0
+// when it is not one.
+int countedKey(const std::string& key) {
+  long long n = 0;
+  auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), n);
+  if (key.empty() || key[0] == '0' || ec != std::errc() || end != key.data() + key.size() || n < 1 || n > 4096) return 0;
+  return static_cast<int>(n);
+}
+
 // "cells": {"1": {"intensity", "color"}, ...}: cells counted from 1 (docs/cells.md).
 void readCellValues(Reader& r, const json& cells, const std::string& cp, CueValues& v) {
   if (!r.isObject(cells, cp, "values by cell number")) return;
   for (auto it = cells.begin(); it != cells.end(); ++it) {
     const std::string p = cp + "/" + pointerToken(it.key());
-    long long n = 0;
-    auto [end, ec] = std::from_chars(it.key().data(), it.key().data() + it.key().size(), n);
-    if (it.key().empty() || it.key()[0] == '0' || ec != std::errc() || end != it.key().data() + it.key().size() ||
-        n < 1 || n > 4096) {
+    const int n = countedKey(it.key());
+    if (n == 0) {
       r.problem(p, "expected a cell number (1 to 4096, written as a string like \"3\"), got \"" + it.key() + "\"");
       continue;
     }
@@ -727,10 +734,8 @@ void readHazerLevels(Reader& r, const json& j, const std::string& hp, const Show
   const size_t count = show.atmosphere.density ? show.atmosphere.density->hazers.size() : 0;
   for (auto it = j.begin(); it != j.end(); ++it) {
     const std::string p = hp + "/" + pointerToken(it.key());
-    long long n = 0;
-    auto [end, ec] = std::from_chars(it.key().data(), it.key().data() + it.key().size(), n);
-    if (it.key().empty() || it.key()[0] == '0' || ec != std::errc() || end != it.key().data() + it.key().size() ||
-        n < 1 || n > 4096) {
+    const int n = countedKey(it.key());
+    if (n == 0) {
       r.problem(p, "expected a hazer number (from 1, written as a string like \"2\"), got \"" + it.key() + "\"");
       continue;
     }
