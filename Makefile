@@ -70,8 +70,9 @@ soak: build node-tools
 	$(MAKE) gui-parallel
 
 GUI_COPIES ?= 20
+GUI_TESTS  ?=
 gui-parallel: build
-	tools/gui_parallel.sh $(HAZE) $(GUI_COPIES)
+	tools/gui_parallel.sh $(HAZE) $(GUI_COPIES) $(GUI_TESTS)
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) build-fuzz out
