@@ -135,7 +135,7 @@ int runStudy(int width, int height) {
 constexpr const char* kBenchUsage =
     "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells separate|merged]]\n"
     "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
-    "                  [--min-samples M] [--density N] [--compare-reference] [--json]\n"
+    "                  [--min-samples M] [--refine C] [--density N] [--compare-reference] [--json]\n"
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
     "first unless --cue, from the show's first camera unless --camera) per frame and per pass;\n"
@@ -150,6 +150,7 @@ int runBench(const Args& args) {
   std::string quality = "default", showPath, cue, camera, cells = "separate";
   bool json = false, compare = false, study = false;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
+  double refine = -1.0;                            // -1: the preset's
   int densityCells = 0;
   CommandLine cli("haze bench", kBenchUsage);
   cli.integer("--fixtures", fixtures, 0, 4096, "0..4096")
@@ -166,6 +167,7 @@ int runBench(const Args& args) {
       .integer("--planes", planes, 1, 4096, "1..4096")
       .integer("--scatter-divisor", divisor, 1, 8, "1..8")
       .integer("--min-samples", minSamples, 0, 256, "0..256")
+      .number("--refine", refine, 0.0, 2.0, "0..2 (0 = no refinement)")
       .integer("--density", densityCells, 2, kMaxDensityCellsPerSide, "2..256 cells per side")
       .choice("--cells", cells, {"separate", "merged"});
   if (auto done = cli.parse(args)) return *done;
@@ -193,6 +195,7 @@ int runBench(const Args& args) {
   if (planes > 0) settings.planes = planes;
   if (divisor > 0) settings.scatterDivisor = divisor;
   if (minSamples >= 0) settings.minSamplesPerChord = minSamples;
+  if (refine >= 0.0) settings.refineCurvature = static_cast<float>(refine);
   auto renderer = Renderer::create(venue, settings);
   if (!renderer) return fail(renderer.error().str());
   // The same frame through a density field, on a renderer of its own, alternating with the
@@ -213,7 +216,7 @@ int runBench(const Args& args) {
 
   std::vector<double> total, cpu, shadow, surfaces, beams, post, meter;
   double coldMs = 0.0;
-  uint64_t fragments = 0, scattering = 0;
+  uint64_t fragments = 0, scattering = 0, refined = 0;
   int beamsInView = 0, shadowSize = 0, lightLayers = 0;
   double beamsPerTile = 0.0;
   std::vector<std::string> warnings;
@@ -259,6 +262,7 @@ int runBench(const Args& args) {
     meter.push_back(t.meterMs);
     fragments = t.planeFragments;
     scattering = t.scatteringFragments;
+    refined = t.refinedPixels;
     beamsInView = t.beamsDrawn;
     beamsPerTile = t.beamsPerTile;
     shadowSize = t.shadowMapSize;
@@ -277,6 +281,7 @@ int runBench(const Args& args) {
   out["planes_per_beam"] = rs.planes;
   out["scatter_divisor"] = rs.scatterDivisor;
   out["min_samples_per_chord"] = rs.minSamplesPerChord;
+  out["refine_curvature"] = rs.refineCurvature;
   out["jittered_frames"] = rs.frames;
   out["frames_measured"] = frames;
   out["median_frame_ms"] = median(total);
@@ -286,6 +291,7 @@ int runBench(const Args& args) {
                     {"post", median(post)}, {"meter", median(meter)}};
   out["plane_fragments"] = fragments;
   out["scattering_fragments"] = scattering;
+  out["refined_pixels"] = refined;
   out["surface_beams_per_tile"] = beamsPerTile;
   out["shadow_map_size"] = shadowSize;
   out["light_map_layers"] = lightLayers;
@@ -323,6 +329,10 @@ int runBench(const Args& args) {
                 "scattering); %.0f ms CPU per frame\n", median(shadow), median(surfaces), median(beams),
                 median(post), median(meter), static_cast<unsigned long long>(fragments),
                 static_cast<unsigned long long>(scattering), median(cpu));
+    if (rs.scatterDivisor > 1 && rs.refineCurvature > 0.0f)
+      std::printf("  %llu pixels (%.1f %%) refined at full resolution (curvature above %.2f)\n",
+                  static_cast<unsigned long long>(refined), 100.0 * static_cast<double>(refined) / (width * height),
+                  rs.refineCurvature);
     std::printf("  shadow maps %d px, %d light maps, %.1f beams per lit surface tile; peak memory %.0f MB\n", shadowSize,
                 lightLayers, beamsPerTile, peakMemoryMb());
     if (dense)

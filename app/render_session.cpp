@@ -21,10 +21,13 @@ RenderSettings renderSettingsFor(Quality q, int width, int height) {
       break;
     case Quality::Default:
       // From HD up the in-scattering is rendered at half resolution and upsampled with the
-      // depth: a quarter of the plane fragments, within 8 % of the reference even for a gobo
-      // seen from the side (tests/render/beams_vs_reference_test.cpp, docs/rendering.md).
+      // depth, and the pixels where it has detail the upsample cannot rebuild (a gobo near the
+      // lens, hard edges) again at full resolution: a quarter of the plane fragments plus a
+      // few percent, within 8 % of the reference even for a gobo seen from the side
+      // (tests/render/beams_vs_reference_test.cpp, docs/rendering.md, "Refinement").
       s = {.width = width, .height = height, .lightMapSize = 512, .shadowMapSize = 1024, .planes = 48,
-           .scatterDivisor = width >= 1280 ? 2 : 1, .frames = 1, .minSamplesPerChord = 16};
+           .scatterDivisor = width >= 1280 ? 2 : 1, .refineCurvature = 0.1f, .refineFloor = 2.0f, .frames = 1,
+           .minSamplesPerChord = 16};
       break;
     case Quality::High:
     case Quality::Reference:

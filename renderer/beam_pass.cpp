@@ -19,6 +19,7 @@ Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings&
   p.settings_ = settings;
   p.settings_.planes = std::clamp(settings.planes, 1, 4096);
   p.settings_.scatterDivisor = std::clamp(settings.scatterDivisor, 1, 8);
+  p.settings_.refineCurvature = std::max(settings.refineCurvature, 0.0f);
   p.settings_.frames = std::clamp(settings.frames, 1, 1024);
   p.settings_.lattice = std::clamp(settings.lattice, 0, 1024);
   if (p.settings_.lattice > 0) {  // the paper's form: plane instances, lattice points, no jitter
@@ -38,12 +39,23 @@ Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings&
   auto depth = gl::buildProgram({.label = "scatter_depth", .vertex = "fullscreen.vert.glsl",
                                  .fragment = "scatter_depth.frag.glsl"});
   if (!depth) return depth.error();
+  auto mask = gl::buildProgram({.label = "refine_mask", .vertex = "fullscreen.vert.glsl",
+                                .fragment = "refine_mask.frag.glsl"});
+  if (!mask) return mask.error();
+  defines.push_back("EARLY_STENCIL");
+  auto planesFine = gl::buildProgram({.label = "virtual_planes_refined", .vertex = "planes.vert.glsl",
+                                      .fragment = "planes.frag.glsl", .defines = defines});
+  if (!planesFine) return planesFine.error();
   p.planes_ = std::move(*planes);
+  p.planesFine_ = std::move(*planesFine);
   p.composite_ = std::move(*composite);
   p.scatterDepth_ = std::move(*depth);
+  p.refineMask_ = std::move(*mask);
 
   p.scatterFbo_ = gl::Framebuffer("scatter_fbo");
   p.lowDepthFbo_ = gl::Framebuffer("scatter_depth_fbo");
+  p.fineFbo_ = gl::Framebuffer("scatter_fine_fbo");
+  p.maskFbo_ = gl::Framebuffer("refine_mask_fbo");
   p.vao_ = gl::VertexArray("planes_vao");
   p.scattered_ = gl::SamplesQuery("scattering_fragments");
   p.resize(width, height);
@@ -57,8 +69,11 @@ void BeamPass::resize(int width, int height) {
   lowW_ = std::max(1, (width + settings_.scatterDivisor - 1) / settings_.scatterDivisor);
   lowH_ = std::max(1, (height + settings_.scatterDivisor - 1) / settings_.scatterDivisor);
   scatter_ = gl::Texture(GL_TEXTURE_2D, "scatter");
-  glTextureStorage2D(scatter_.id(), 1, GL_RGBA32F, lowW_, lowH_);
-  glTextureParameteri(scatter_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  // With refinement the buffer has a mip chain: its last level is the frame's mean in-scattering,
+  // the scale that tells detail worth refining from the faint tails of beams.
+  scatterLevels_ = refining() ? 1 + static_cast<int>(std::floor(std::log2(std::max(lowW_, lowH_)))) : 1;
+  glTextureStorage2D(scatter_.id(), scatterLevels_, GL_RGBA32F, lowW_, lowH_);
+  glTextureParameteri(scatter_.id(), GL_TEXTURE_MIN_FILTER, scatterLevels_ > 1 ? GL_NEAREST_MIPMAP_NEAREST : GL_NEAREST);
   glTextureParameteri(scatter_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glNamedFramebufferTexture(scatterFbo_.id(), GL_COLOR_ATTACHMENT0, scatter_.id(), 0);
   lowDepth_ = gl::Texture(GL_TEXTURE_2D, "scatter_depth");
@@ -66,6 +81,22 @@ void BeamPass::resize(int width, int height) {
   glTextureParameteri(lowDepth_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(lowDepth_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glNamedFramebufferTexture(lowDepthFbo_.id(), GL_COLOR_ATTACHMENT0, lowDepth_.id(), 0);
+  if (refining()) {
+    fine_ = gl::Texture(GL_TEXTURE_2D, "scatter_fine");
+    glTextureStorage2D(fine_.id(), 1, GL_RGBA32F, width, height);
+    mask_ = gl::Texture(GL_TEXTURE_2D, "refine_mask");
+    glTextureStorage2D(mask_.id(), 1, GL_R8, width, height);
+    for (GLuint t : {fine_.id(), mask_.id()}) {
+      glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    stencil_ = gl::Renderbuffer("refine_stencil");
+    glNamedRenderbufferStorage(stencil_.id(), GL_STENCIL_INDEX8, width, height);
+    glNamedFramebufferTexture(fineFbo_.id(), GL_COLOR_ATTACHMENT0, fine_.id(), 0);
+    glNamedFramebufferRenderbuffer(fineFbo_.id(), GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, stencil_.id());
+    glNamedFramebufferTexture(maskFbo_.id(), GL_COLOR_ATTACHMENT0, mask_.id(), 0);
+    glNamedFramebufferRenderbuffer(maskFbo_.id(), GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, stencil_.id());
+  }
   accumulated_ = 0;  // what was accumulated was for the old size
 }
 
@@ -100,20 +131,22 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   glBlendEquation(GL_FUNC_ADD);
-  const GLuint prog = planes_.id();
-  glUseProgram(prog);
-  setCameraUniforms(prog, frame.camera, aspect);
-  glProgramUniform1f(prog, HAZE_LOC_SCATTER_SIGMA_S, med.scattering);
-  glProgramUniform1f(prog, HAZE_LOC_SCATTER_SIGMA_T, med.extinction());
-  glProgramUniform2f(prog, HAZE_LOC_SCATTER_TARGET_SIZE, static_cast<float>(lowW_), static_cast<float>(lowH_));
-  glProgramUniform1i(prog, HAZE_LOC_SCATTER_JITTER, settings_.jitter ? 1 : 0);
-  glProgramUniform1i(prog, HAZE_LOC_SCATTER_PLANES, settings_.planes);
-  glProgramUniform1i(prog, HAZE_LOC_SCATTER_MIN_SAMPLES, settings_.minSamplesPerChord);
-  glProgramUniform2i(prog, HAZE_LOC_SCATTER_LATTICE, settings_.lattice, settings_.lattice);
-  glProgramUniform1i(prog, HAZE_LOC_PHASE, static_cast<int>(med.phase));  // Phase's values are HAZE_PHASE_*
-  glProgramUniform1f(prog, HAZE_LOC_PHASE_G, med.g);
+  // The refinement's program is the same shader with early stencil tests: without them
+  // llvmpipe shades every fragment of the footprint before the stencil rejects it.
+  for (GLuint prog : {planes_.id(), refining() ? planesFine_.id() : 0u}) {
+    if (prog == 0) continue;
+    setCameraUniforms(prog, frame.camera, aspect);
+    glProgramUniform1f(prog, HAZE_LOC_SCATTER_SIGMA_S, med.scattering);
+    glProgramUniform1f(prog, HAZE_LOC_SCATTER_SIGMA_T, med.extinction());
+    glProgramUniform1i(prog, HAZE_LOC_SCATTER_JITTER, settings_.jitter ? 1 : 0);
+    glProgramUniform1i(prog, HAZE_LOC_SCATTER_PLANES, settings_.planes);
+    glProgramUniform1i(prog, HAZE_LOC_SCATTER_MIN_SAMPLES, settings_.minSamplesPerChord);
+    glProgramUniform2i(prog, HAZE_LOC_SCATTER_LATTICE, settings_.lattice, settings_.lattice);
+    glProgramUniform1i(prog, HAZE_LOC_PHASE, static_cast<int>(med.phase));  // Phase's values are HAZE_PHASE_*
+    glProgramUniform1f(prog, HAZE_LOC_PHASE_G, med.g);
+    density.bind(prog);
+  }
   beams.bind();
-  density.bind(prog);
 
   // Each cone only as far as it can light anything (its shadow map's farthest surface).
   std::vector<BeamFootprint> footprints(frame.beams.size());
@@ -125,31 +158,29 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
     beamsDrawn_ += footprints[i].visible ? 1 : 0;
   }
 
+  if (refining() && !accumulate) {
+    const float zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(fineFbo_.id(), GL_COLOR, 0, zero);
+  }
   uint64_t fragments = 0;
   glBeginQuery(GL_SAMPLES_PASSED, scattered_.id());
   for (int f = 0; f < settings_.frames; ++f) {
     // Golden-ratio steps give well-spread offsets for any number of accumulated frames.
     const float jitter = std::fmod(static_cast<float>(accumulated_) * 0.6180339887f, 1.0f);
-    glProgramUniform1f(prog, HAZE_LOC_SCATTER_FRAME_JITTER, jitter);
-    for (size_t i = 0; i < frame.beams.size(); ++i) {
-      const BeamFootprint& fp = footprints[i];
-      if (!fp.visible) continue;
-      const float dz = (fp.zFar - fp.zNear) / static_cast<float>(settings_.planes);
-      glProgramUniform4fv(prog, HAZE_LOC_PLANES_RECT_NDC, 1, glm::value_ptr(fp.rectNdc));
-      if (settings_.lattice == 0)
-        glProgramUniform2fv(prog, HAZE_LOC_PLANES_POLYGON_NDC, fp.vertexCount, glm::value_ptr(fp.polygonNdc[0]));
-      glProgramUniform2f(prog, HAZE_LOC_SCATTER_DEPTH_RANGE, fp.zNear, dz);
-      glProgramUniform1i(prog, HAZE_LOC_SCATTER_BEAM, static_cast<int>(i));
-      const int instances = settings_.fused ? 1 : settings_.planes;
-      double px = 0.0;
-      if (settings_.lattice > 0) {  // the paper's lattice spans the bounding rectangle
-        glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * settings_.lattice * settings_.lattice, instances);
-        px = (fp.rectNdc.z - fp.rectNdc.x) * 0.5 * lowW_ * (fp.rectNdc.w - fp.rectNdc.y) * 0.5 * lowH_;
-      } else {
-        glDrawArraysInstanced(GL_TRIANGLE_FAN, 0, fp.vertexCount, instances);
-        px = fp.areaNdc() * 0.25 * lowW_ * lowH_;
-      }
-      fragments += static_cast<uint64_t>(px) * static_cast<uint64_t>(instances);
+    glBindFramebuffer(GL_FRAMEBUFFER, scatterFbo_.id());
+    glViewport(0, 0, lowW_, lowH_);
+    fragments += drawBeams(planes_.id(), jitter, frame, footprints, lowW_, lowH_);
+    if (refining()) {
+      // The mask follows the first frame of an accumulation and is kept for the rest, so that
+      // every refined pixel averages the same frames.
+      if (accumulated_ == 0) markRefinedPixels();
+      glBindFramebuffer(GL_FRAMEBUFFER, fineFbo_.id());
+      glViewport(0, 0, width_, height_);
+      glEnable(GL_STENCIL_TEST);
+      glStencilFunc(GL_EQUAL, 1, 0xFF);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      drawBeams(planesFine_.id(), jitter, frame, footprints, width_, height_);
+      glDisable(GL_STENCIL_TEST);
     }
     ++accumulated_;
   }
@@ -164,9 +195,77 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
   glProgramUniform1i(composite_.id(), HAZE_LOC_COMPOSITE_UPSAMPLE, settings_.scatterDivisor > 1 ? 1 : 0);
   glBindTextureUnit(HAZE_UNIT_SCATTER, scatter_.id());
   glBindTextureUnit(HAZE_UNIT_SCATTER_DEPTH, lowDepth_.id());
+  glProgramUniform1i(composite_.id(), HAZE_LOC_COMPOSITE_REFINE, refining() ? 1 : 0);
+  if (refining()) {
+    glBindTextureUnit(HAZE_UNIT_SCATTER_FINE, fine_.id());
+    glBindTextureUnit(HAZE_UNIT_REFINE_MASK, mask_.id());
+  }
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_BLEND);
   return fragments;
+}
+
+// One jittered frame of every visible beam into the bound target of targetW x targetH pixels;
+// returns the plane fragments rasterised (an estimate from the footprints, for the bench).
+uint64_t BeamPass::drawBeams(GLuint prog, float frameJitter, const FrameState& frame,
+                             const std::vector<BeamFootprint>& footprints, int targetW, int targetH) {
+  glUseProgram(prog);
+  glProgramUniform1f(prog, HAZE_LOC_SCATTER_FRAME_JITTER, frameJitter);
+  glProgramUniform2f(prog, HAZE_LOC_SCATTER_TARGET_SIZE, static_cast<float>(targetW), static_cast<float>(targetH));
+  uint64_t fragments = 0;
+  for (size_t i = 0; i < frame.beams.size(); ++i) {
+    const BeamFootprint& fp = footprints[i];
+    if (!fp.visible) continue;
+    const float dz = (fp.zFar - fp.zNear) / static_cast<float>(settings_.planes);
+    glProgramUniform4fv(prog, HAZE_LOC_PLANES_RECT_NDC, 1, glm::value_ptr(fp.rectNdc));
+    if (settings_.lattice == 0)
+      glProgramUniform2fv(prog, HAZE_LOC_PLANES_POLYGON_NDC, fp.vertexCount, glm::value_ptr(fp.polygonNdc[0]));
+    glProgramUniform2f(prog, HAZE_LOC_SCATTER_DEPTH_RANGE, fp.zNear, dz);
+    glProgramUniform1i(prog, HAZE_LOC_SCATTER_BEAM, static_cast<int>(i));
+    const int instances = settings_.fused ? 1 : settings_.planes;
+    double px = 0.0;
+    if (settings_.lattice > 0) {  // the paper's lattice spans the bounding rectangle
+      glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * settings_.lattice * settings_.lattice, instances);
+      px = (fp.rectNdc.z - fp.rectNdc.x) * 0.5 * targetW * (fp.rectNdc.w - fp.rectNdc.y) * 0.5 * targetH;
+    } else {
+      glDrawArraysInstanced(GL_TRIANGLE_FAN, 0, fp.vertexCount, instances);
+      px = fp.areaNdc() * 0.25 * targetW * targetH;
+    }
+    fragments += static_cast<uint64_t>(px) * static_cast<uint64_t>(instances);
+  }
+  return fragments;
+}
+
+// Stencil 1 (and mask 1) on the pixels refine_mask.frag.glsl keeps.
+void BeamPass::markRefinedPixels() {
+  glBindFramebuffer(GL_FRAMEBUFFER, maskFbo_.id());
+  glViewport(0, 0, width_, height_);
+  const float zero[4] = {0, 0, 0, 0};
+  glStencilMask(0xFF);
+  glClearNamedFramebufferfv(maskFbo_.id(), GL_COLOR, 0, zero);
+  const GLint zeroStencil = 0;
+  glClearNamedFramebufferiv(maskFbo_.id(), GL_STENCIL, 0, &zeroStencil);
+  glDisable(GL_BLEND);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 1, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glUseProgram(refineMask_.id());
+  glProgramUniform1f(refineMask_.id(), HAZE_LOC_REFINE_CONTRAST, settings_.refineCurvature);
+  glProgramUniform1f(refineMask_.id(), HAZE_LOC_REFINE_FLOOR, settings_.refineFloor);
+  glGenerateTextureMipmap(scatter_.id());
+  glBindTextureUnit(HAZE_UNIT_SCATTER, scatter_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_STENCIL_TEST);
+  glEnable(GL_BLEND);
+}
+
+uint64_t BeamPass::refinedPixels() const {
+  if (!refining() || !mask_) return 0;
+  std::vector<uint8_t> m(static_cast<size_t>(width_) * static_cast<size_t>(height_));
+  glGetTextureImage(mask_.id(), 0, GL_RED, GL_UNSIGNED_BYTE, static_cast<GLsizei>(m.size()), m.data());
+  uint64_t n = 0;
+  for (uint8_t v : m) n += v > 127 ? 1 : 0;
+  return n;
 }
 
 uint64_t BeamPass::scatteringFragments() const {

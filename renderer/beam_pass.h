@@ -5,6 +5,8 @@
 // which is then upsampled (depth-aware) onto the radiance target.
 #pragma once
 
+#include <vector>
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -21,6 +23,13 @@ namespace haze {
 struct BeamPassSettings {
   int planes = 48;          // per beam, over its depth range
   int scatterDivisor = 1;   // 1 full resolution, 2 half (depth-aware upsample), ...
+  // With scatterDivisor > 1: pixels where the low-resolution in-scattering has detail at the
+  // texel scale (relative curvature above this, refine_mask.frag.glsl) are rendered again at
+  // full resolution. 0 = off.
+  float refineCurvature = 0.0f;
+  // ... and only where the neighbourhood's brightest value is above this fraction of the frame's
+  // mean in-scattering (the faint ends of beams are left to the upsample).
+  float refineFloor = 0.0f;
   int frames = 1;           // jittered frames accumulated per render
   bool jitter = true;       // per-pixel plane offsets; off = plane centres (the paper's slicing)
   // One fragment per pixel walks the planes its ray crosses inside the cone (the planes clipped
@@ -55,15 +64,28 @@ class BeamPass {
   // Of the last render's plane fragments, those that added light (inside a cone, in front of
   // the scene); the rest were spent on footprint pixels the cones do not cover.
   uint64_t scatteringFragments() const;
+  // Pixels the last render refined at full resolution (0 without refinement).
+  uint64_t refinedPixels() const;
 
  private:
   BeamPassSettings settings_;
   int width_ = 0, height_ = 0, lowW_ = 0, lowH_ = 0;
-  gl::Program planes_, composite_, scatterDepth_;
+  bool refining() const { return settings_.scatterDivisor > 1 && settings_.refineCurvature > 0.0f; }
+  uint64_t drawBeams(GLuint program, float frameJitter, const FrameState& frame,
+                     const std::vector<BeamFootprint>& footprints, int targetW, int targetH);
+  void markRefinedPixels();
+
+  gl::Program planes_, planesFine_, composite_, scatterDepth_, refineMask_;
   gl::Texture scatter_, lowDepth_;
   gl::Framebuffer scatterFbo_, lowDepthFbo_;
+  // Refinement: the full-resolution scattering of the marked pixels, the mask, and the stencil
+  // that keeps the full-resolution beam pass to them.
+  gl::Texture fine_, mask_;
+  gl::Renderbuffer stencil_;
+  gl::Framebuffer fineFbo_, maskFbo_;
   gl::VertexArray vao_;
-  gl::SamplesQuery scattered_;
+  gl::SamplesQuery scattered_, refined_;
+  int scatterLevels_ = 1;
   int accumulated_ = 0;
   int beamsDrawn_ = 0;
 };

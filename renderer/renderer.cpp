@@ -127,7 +127,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   impl->postProgram = std::move(*post);
   auto pass = BeamPass::create(settings.width, settings.height,
                                {.planes = settings.planes, .scatterDivisor = settings.scatterDivisor,
-                                .frames = settings.frames, .jitter = settings.jitter,
+                                .refineCurvature = settings.refineCurvature,
+                                .refineFloor = settings.refineFloor, .frames = settings.frames, .jitter = settings.jitter,
                                 .fused = settings.fusedPlanes, .minSamplesPerChord = settings.minSamplesPerChord,
                                 .lattice = settings.lattice});
   if (!pass) return pass.error();
@@ -280,6 +281,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   times_.beamsDrawn = m.beamPass.beamsDrawn();
   if (timing) {
     times_.scatteringFragments = m.beamPass.scatteringFragments();
+    times_.refinedPixels = m.beamPass.refinedPixels();
     if (settings_.tiledSurfaces && m.beams.count() > 0) times_.beamsPerTile = m.tiles.meanBeamsPerTile();
     double* ms[3] = {&times_.shadowMapsMs, &times_.surfacesMs, &times_.beamsMs};
     for (int i = 0; i < 3; ++i) {

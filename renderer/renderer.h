@@ -23,6 +23,8 @@ struct RenderSettings {
   int shadowMapSize = 1024;
   int planes = 48;          // virtual planes per beam
   int scatterDivisor = 1;   // scattering buffer at 1/n resolution, depth-aware upsample
+  float refineCurvature = 0.0f;  // see BeamPassSettings::refineCurvature (0 = no refinement)
+  float refineFloor = 0.0f;      // see BeamPassSettings::refineFloor
   int frames = 1;           // jittered frames accumulated per render
   bool jitter = true;
   bool fusedPlanes = true;  // see BeamPassSettings::fused
@@ -59,6 +61,7 @@ struct PassTimes {
   double beamsPerTile = 0;           // surfaces: beams tried per lit 16x16 tile (timePasses only)
   uint64_t planeFragments = 0;       // footprint pixels times planes (or walks, when fused)
   uint64_t scatteringFragments = 0;  // of those, the ones that added light (timePasses only)
+  uint64_t refinedPixels = 0;        // rendered again at full resolution (timePasses only)
   int accumulatedFrames = 0;
 };
 

@@ -32,6 +32,8 @@
 #define HAZE_UNIT_DENSITY 9         // density.glsl: D(x) on its grid (3D, trilinear, clamped to edge)
 #define HAZE_UNIT_EYE_PATH 10       // density.glsl: the integral of D from the eye, over screen x view depth
 #define HAZE_UNIT_LENS_PATH 11      // density.glsl: the integral of D from each lens, over light-map (u, v) x r
+#define HAZE_UNIT_SCATTER_FINE 12   // composite.frag.glsl: full-resolution in-scattering where refined
+#define HAZE_UNIT_REFINE_MASK 13    // composite.frag.glsl: 1 where the pixel was refined
 // No image units are used.
 
 // ---- Shader storage buffer bindings -------------------------------------------------------
@@ -94,6 +96,11 @@
 // composite.frag.glsl
 #define HAZE_LOC_COMPOSITE_SCALE 0
 #define HAZE_LOC_COMPOSITE_UPSAMPLE 1
+#define HAZE_LOC_COMPOSITE_REFINE 2     // int: 1 = take the refined pixels from HAZE_UNIT_SCATTER_FINE
+
+// refine_mask.frag.glsl
+#define HAZE_LOC_REFINE_CONTRAST 0      // float: the relative curvature that refines
+#define HAZE_LOC_REFINE_FLOOR 1         // float: ... where the brightest neighbour is above this x the frame's mean
 
 // post.frag.glsl
 #define HAZE_LOC_POST_EXPOSURE 0

@@ -7,6 +7,12 @@
 #include "cone.glsl"
 #include "scatter.glsl"
 
+#ifdef EARLY_STENCIL
+// The refinement's pass (docs/rendering.md, "Refinement"): the stencil keeps the marked pixels,
+// and tested before shading it saves the others' walks (the shader writes no depth or stencil).
+layout(early_fragment_tests) in;
+#endif
+
 flat in int vPlane;
 #ifdef LATTICE
 in vec3 vScatter;

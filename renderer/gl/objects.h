@@ -79,7 +79,14 @@ struct SamplesQueryKind {
   static void destroy(GLuint id) { glDeleteQueries(1, &id); }
 };
 
+struct RenderbufferKind {
+  static constexpr GLenum kLabelType = GL_RENDERBUFFER;
+  static GLuint create() { GLuint id; glCreateRenderbuffers(1, &id); return id; }
+  static void destroy(GLuint id) { glDeleteRenderbuffers(1, &id); }
+};
+
 using Buffer = Object<BufferKind>;
+using Renderbuffer = Object<RenderbufferKind>;
 using VertexArray = Object<VertexArrayKind>;
 using Framebuffer = Object<FramebufferKind>;
 using Sampler = Object<SamplerKind>;
