@@ -1,9 +1,10 @@
 // The inspector for the selection (one or many fixtures): name, position and mounting rotation
 // (one fixture), pan and tilt with focus to point, and the attributes: intensity, colour (picker
-// and the profile's colour wheel), zoom, gobo, gobo rotation, iris, shutter, and frost, prism and
-// blades where the profile has them. Shown values are the first
-// selected fixture's on stage; a change sets that attribute of every selected fixture in the
-// programmer (a drag is one undo step). "*" marks attributes the programmer holds.
+// and the profile's colour wheel, the second colour wheel, CTO), zoom, gobo, gobo rotation and
+// spin (both gobo wheels), iris, shutter, and frost, prism and blades where the profile has them.
+// Shown values are the first selected fixture's on stage; a change sets that attribute of every
+// selected fixture in the programmer (a drag is one undo step). "*" marks attributes the
+// programmer holds.
 #include <algorithm>
 #include <cstdio>
 #include <optional>
