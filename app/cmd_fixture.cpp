@@ -45,6 +45,14 @@ void printText(const nlohmann::ordered_json& f) {
     }
     std::cout << "\n";
   }
+  for (auto [key, what] : {std::pair{"gobo_wheels", "gobo wheel"}, std::pair{"color_wheels", "colour wheel"}})
+    for (size_t w = 0; w < f[key].size(); ++w) {
+      const auto& wheel = f[key][w];
+      std::cout << "  " << what << " " << w + 1 << " \"" << wheel["name"].get<std::string>() << "\": " << wheel["slots"].size()
+                << " slots:";
+      for (const auto& s : wheel["slots"]) std::cout << " \"" << s.get<std::string>() << "\"";
+      std::cout << "\n";
+    }
   // Beam optics beyond the gobo.
   if (!f["frost"].is_null()) std::cout << "  frost up to " << f["frost"]["max"].get<double>() << " deg\n";
   for (const auto& p : f["prisms"])

@@ -81,7 +81,7 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
                                                         f.profile + "'"};
     const Profile& profile = *p->second;
     const auto s = state.find(f.id);
-    const Attributes a = s != state.end() ? s->second : Attributes{};
+    const Attributes a = spunAt(s != state.end() ? s->second : Attributes{}, options.clockS);
     if (options.bodies) poseBody(profile.housing(), f.position, f.rotationDeg, a.panDeg, a.tiltDeg, frame.bodies);
     const std::optional<FrameTime>& time = options.time;
     const float gate = time ? shutterAverage(a.shutter, time->timeS, time->timeS + time->exposureS) : shutterMean(a.shutter);
@@ -110,6 +110,8 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
       ok = hashValue(ok, b.optics.fieldAngleDeg);
       ok = hashValue(ok, b.optics.gobo.get());
       ok = hashValue(ok, b.optics.goboRotationDeg);
+      ok = hashValue(ok, b.optics.gobo2.get());
+      ok = hashValue(ok, b.optics.gobo2RotationDeg);
       ok = hashValue(ok, b.optics.iris);
       ok = hashValue(ok, b.optics.blades);
       b.opticsKey = ok;

@@ -27,6 +27,9 @@ struct FrameOptions {
   std::optional<FrameTime> time;  // none: a still
   // The fixtures' housings (docs/fixtures.md, "Bodies"), dark fixtures' too.
   bool bodies = true;
+  // The show clock the frame is built for (the playback time of --at, of a video frame, of the
+  // GUI and live clocks): spinning wheels stand at rotation + spin * clockS (docs/physics.md, "Spin").
+  double clockS = 0.0;
   // The medium's density field at the frame's time (app/atmosphere_field.h); none: uniform.
   std::shared_ptr<const DensityField> density;
 };

@@ -24,9 +24,26 @@ nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profil
     o["pan"] = tidy(a.panDeg);
     o["tilt"] = tidy(a.tiltDeg);
     o["color"] = {tidy(a.color.r), tidy(a.color.g), tidy(a.color.b)};
+    if (a.color2 != "Open") o["color2"] = a.color2;
+    if (a.ctoMired != 0.0f) o["cto"] = tidy(a.ctoMired);
     o["zoom"] = zoom ? nlohmann::ordered_json(tidy(*zoom)) : nlohmann::ordered_json(nullptr);
     o["gobo"] = a.gobo;
     o["gobo_rotation"] = tidy(a.goboRotationDeg);
+    // The second wheel and the spins only where they are in, so that states of fixtures
+    // without them print as before. "*_angle": where the spinning wheel stands at --at.
+    const double t = gateAtS.value_or(0.0);
+    if (a.goboSpinDegS != 0.0f) {
+      o["gobo_spin"] = tidy(a.goboSpinDegS);
+      o["gobo_angle"] = tidy(spunDeg(a.goboRotationDeg, a.goboSpinDegS, t));
+    }
+    if (a.gobo2 != "Open" || a.gobo2RotationDeg != 0.0f || a.gobo2SpinDegS != 0.0f) {
+      o["gobo2"] = a.gobo2;
+      o["gobo2_rotation"] = tidy(a.gobo2RotationDeg);
+    }
+    if (a.gobo2SpinDegS != 0.0f) {
+      o["gobo2_spin"] = tidy(a.gobo2SpinDegS);
+      o["gobo2_angle"] = tidy(spunDeg(a.gobo2RotationDeg, a.gobo2SpinDegS, t));
+    }
     o["iris"] = tidy(a.iris);
     if (cells > 0) {  // docs/cells.md: every cell of the profile, 1 and white where unset
       nlohmann::ordered_json list = nlohmann::ordered_json::array();
@@ -39,6 +56,10 @@ nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profil
     o["frost"] = tidy(a.frost);
     o["prism"] = a.prism;
     o["prism_rotation"] = tidy(a.prismRotationDeg);
+    if (a.prismSpinDegS != 0.0f) {
+      o["prism_spin"] = tidy(a.prismSpinDegS);
+      o["prism_angle"] = tidy(spunDeg(a.prismRotationDeg, a.prismSpinDegS, t));
+    }
     nlohmann::ordered_json blades = nlohmann::ordered_json::array();
     for (const glm::vec2& ends : a.blades) blades.push_back({tidy(ends.x), tidy(ends.y)});
     o["blades"] = blades;

@@ -3,6 +3,8 @@
 // "frost", "prism", "prism_rotation", "blades", "blade_rotation", "shutter"[, "gate"]}}, zoom
 // falling back to the profile's field angle (null when neither is known). With gateAtS, "gate"
 // is the shutter's s(t) at that time on the playback clock (docs/show-format.md, "Strobe").
+// "gobo2", "gobo2_rotation" and the spins ("gobo_spin" with "gobo_angle", the angle at gateAtS
+// or 0...) only where they are not neutral.
 #pragma once
 
 #include <optional>

@@ -38,6 +38,13 @@ void layValues(CueValues& u, const CueValues& o) {
   lay(u.iris, o.iris);
   lay(u.color, o.color);
   lay(u.gobo, o.gobo);
+  lay(u.gobo2, o.gobo2);
+  lay(u.color2, o.color2);
+  lay(u.ctoMired, o.ctoMired);
+  lay(u.gobo2RotationDeg, o.gobo2RotationDeg);
+  lay(u.goboSpinDegS, o.goboSpinDegS);
+  lay(u.gobo2SpinDegS, o.gobo2SpinDegS);
+  lay(u.prismSpinDegS, o.prismSpinDegS);
   for (const auto& [k, c] : o.cells) {
     lay(u.cells[k].intensity, c.intensity);
     lay(u.cells[k].color, c.color);
@@ -95,6 +102,13 @@ void forEachValue(F f) {
   f(&CueValues::iris);
   f(&CueValues::color);
   f(&CueValues::gobo);
+  f(&CueValues::gobo2);
+  f(&CueValues::color2);
+  f(&CueValues::ctoMired);
+  f(&CueValues::gobo2RotationDeg);
+  f(&CueValues::goboSpinDegS);
+  f(&CueValues::gobo2SpinDegS);
+  f(&CueValues::prismSpinDegS);
   f(&CueValues::frost);
   f(&CueValues::prismRotationDeg);
   f(&CueValues::bladeRotationDeg);
@@ -257,6 +271,8 @@ std::string attributeOutsideKind(PaletteKind kind, const CueValues& v) {
   if (!position && v.panDeg) return "pan";
   if (!position && v.tiltDeg) return "tilt";
   if (!color && v.color) return "color";
+  if (!color && v.color2) return "color2";
+  if (!color && v.ctoMired) return "cto";
   for (const auto& [k, c] : v.cells) {
     if (c.intensity) return "cells/" + std::to_string(k + 1) + "/intensity";
     if (!color && c.color) return "cells/" + std::to_string(k + 1) + "/color";
@@ -265,6 +281,11 @@ std::string attributeOutsideKind(PaletteKind kind, const CueValues& v) {
     if (v.zoomDeg) return "zoom";
     if (v.gobo) return "gobo";
     if (v.goboRotationDeg) return "gobo_rotation";
+    if (v.gobo2) return "gobo2";
+    if (v.gobo2RotationDeg) return "gobo2_rotation";
+    if (v.goboSpinDegS) return "gobo_spin";
+    if (v.gobo2SpinDegS) return "gobo2_spin";
+    if (v.prismSpinDegS) return "prism_spin";
     if (v.iris) return "iris";
     if (v.frost) return "frost";
     if (v.prism) return "prism";
@@ -358,8 +379,8 @@ struct Checker {
       case PaletteKind::Position: return "pan and tilt only";
       case PaletteKind::Color: return "color and cell colours only";
       case PaletteKind::Beam:
-        return "beam attributes only (zoom, gobo, gobo_rotation, iris, frost, prism, prism_rotation, blades, "
-               "blade_rotation, shutter)";
+        return "beam attributes only (zoom, gobo, gobo_rotation, gobo2, gobo2_rotation, the spins, iris, frost, prism, "
+               "prism_rotation, blades, blade_rotation, shutter)";
       case PaletteKind::All: break;
     }
     return "any attribute";

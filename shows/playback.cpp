@@ -28,6 +28,13 @@ void overlayValues(Attributes& a, const CueValues& v) {
   if (v.zoomDeg) a.zoomDeg = *v.zoomDeg;
   if (v.gobo) a.gobo = *v.gobo;
   if (v.goboRotationDeg) a.goboRotationDeg = *v.goboRotationDeg;
+  if (v.gobo2) a.gobo2 = *v.gobo2;
+  if (v.color2) a.color2 = *v.color2;
+  if (v.ctoMired) a.ctoMired = *v.ctoMired;
+  if (v.gobo2RotationDeg) a.gobo2RotationDeg = *v.gobo2RotationDeg;
+  if (v.goboSpinDegS) a.goboSpinDegS = *v.goboSpinDegS;
+  if (v.gobo2SpinDegS) a.gobo2SpinDegS = *v.gobo2SpinDegS;
+  if (v.prismSpinDegS) a.prismSpinDegS = *v.prismSpinDegS;
   if (v.iris) a.iris = *v.iris;
   for (const auto& [k, cv] : v.cells) {
     if (k < 0) continue;
@@ -96,6 +103,9 @@ Attributes blendParts(const Attributes& from, const Attributes& to, const PartPr
   a.panDeg = mix(from.panDeg, to.panDeg, p.position);
   a.tiltDeg = mix(from.tiltDeg, to.tiltDeg, p.position);
   a.color = mix(from.color, to.color, p.color);
+  a.ctoMired = mix(from.ctoMired, to.ctoMired, p.color);
+  // A colour wheel's slot switches when the colour's fade starts, as a gobo does with the beam's.
+  if (p.color < 0.0) a.color2 = from.color2;
   a.cells.resize(std::max(from.cells.size(), to.cells.size()));
   for (size_t k = 0; k < a.cells.size(); ++k) {
     const CellAttributes c0 = cellAttributes(from, k), c1 = cellAttributes(to, k);
@@ -105,10 +115,15 @@ Attributes blendParts(const Attributes& from, const Attributes& to, const PartPr
   // The beam: gobo, prism and shutter switch when the beam's fade starts; the rest fades.
   if (p.beam < 0.0) {
     a.gobo = from.gobo;
+    a.gobo2 = from.gobo2;
     a.prism = from.prism;
     a.shutter = from.shutter;
   }
   a.goboRotationDeg = mix(from.goboRotationDeg, to.goboRotationDeg, p.beam);
+  a.gobo2RotationDeg = mix(from.gobo2RotationDeg, to.gobo2RotationDeg, p.beam);
+  a.goboSpinDegS = mix(from.goboSpinDegS, to.goboSpinDegS, p.beam);
+  a.gobo2SpinDegS = mix(from.gobo2SpinDegS, to.gobo2SpinDegS, p.beam);
+  a.prismSpinDegS = mix(from.prismSpinDegS, to.prismSpinDegS, p.beam);
   a.iris = mix(from.iris, to.iris, p.beam);
   a.frost = mix(from.frost, to.frost, p.beam);
   a.prismRotationDeg = mix(from.prismRotationDeg, to.prismRotationDeg, p.beam);
@@ -232,6 +247,8 @@ static void applyEffects(const Show& show, const ProfileSet& profiles, const Cue
           add(a.frost, amount, 0.0, 1.0);
         } else if (at == "gobo_rotation") {
           add(a.goboRotationDeg, amount, -kFree, kFree);
+        } else if (at == "gobo2_rotation") {
+          add(a.gobo2RotationDeg, amount, -kFree, kFree);
         } else if (at == "prism_rotation") {
           add(a.prismRotationDeg, amount, -kFree, kFree);
         }
@@ -282,6 +299,16 @@ CueValues cueValuesOf(const Attributes& a) {
   v.zoomDeg = a.zoomDeg;
   v.gobo = a.gobo;
   v.goboRotationDeg = a.goboRotationDeg;
+  // The second wheel and the spins only where they are in, so that a look recorded on a
+  // fixture without them reads as before.
+  const Attributes neutral;
+  if (a.gobo2 != neutral.gobo2) v.gobo2 = a.gobo2;
+  if (a.color2 != neutral.color2) v.color2 = a.color2;
+  if (a.ctoMired != 0.0f) v.ctoMired = a.ctoMired;
+  if (a.gobo2RotationDeg != 0.0f) v.gobo2RotationDeg = a.gobo2RotationDeg;
+  if (a.goboSpinDegS != 0.0f) v.goboSpinDegS = a.goboSpinDegS;
+  if (a.gobo2SpinDegS != 0.0f) v.gobo2SpinDegS = a.gobo2SpinDegS;
+  if (a.prismSpinDegS != 0.0f) v.prismSpinDegS = a.prismSpinDegS;
   v.iris = a.iris;
   v.frost = a.frost;
   v.prism = a.prism;

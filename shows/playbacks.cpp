@@ -29,6 +29,13 @@ void copyAttribute(Attributes& to, const Attributes& from, LtpAttribute a, int c
     case A::Blades: to.blades = from.blades; break;
     case A::BladeRotation: to.bladeRotationDeg = from.bladeRotationDeg; break;
     case A::Shutter: to.shutter = from.shutter; break;
+    case A::Gobo2: to.gobo2 = from.gobo2; break;
+    case A::Gobo2Rotation: to.gobo2RotationDeg = from.gobo2RotationDeg; break;
+    case A::GoboSpin: to.goboSpinDegS = from.goboSpinDegS; break;
+    case A::Gobo2Spin: to.gobo2SpinDegS = from.gobo2SpinDegS; break;
+    case A::PrismSpin: to.prismSpinDegS = from.prismSpinDegS; break;
+    case A::Color2: to.color2 = from.color2; break;
+    case A::Cto: to.ctoMired = from.ctoMired; break;
     case A::CellColor:
     case A::CellIntensity: {
       const size_t k = static_cast<size_t>(cell);
@@ -54,6 +61,7 @@ void effectKeys(const Show& show, const EffectDef& e, std::vector<HeldKey>& out)
   else if (e.attribute == "iris") attributes = {A::Iris};
   else if (e.attribute == "frost") attributes = {A::Frost};
   else if (e.attribute == "gobo_rotation") attributes = {A::GoboRotation};
+  else if (e.attribute == "gobo2_rotation") attributes = {A::Gobo2Rotation};
   else if (e.attribute == "prism_rotation") attributes = {A::PrismRotation};
   for (int id : g->fixtures)
     for (A a : attributes) out.emplace_back(id, a, 0);
@@ -90,6 +98,13 @@ std::vector<HeldKey> heldKeys(int id, const CueValues& v) {
   add(v.blades.has_value(), A::Blades);
   add(v.bladeRotationDeg.has_value(), A::BladeRotation);
   add(v.shutter.has_value(), A::Shutter);
+  add(v.gobo2.has_value(), A::Gobo2);
+  add(v.gobo2RotationDeg.has_value(), A::Gobo2Rotation);
+  add(v.goboSpinDegS.has_value(), A::GoboSpin);
+  add(v.gobo2SpinDegS.has_value(), A::Gobo2Spin);
+  add(v.prismSpinDegS.has_value(), A::PrismSpin);
+  add(v.color2.has_value(), A::Color2);
+  add(v.ctoMired.has_value(), A::Cto);
   for (const auto& [k, c] : v.cells) {
     if (k < 0) continue;
     if (c.intensity) out.emplace_back(id, A::CellIntensity, k);

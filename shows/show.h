@@ -85,6 +85,10 @@ struct CueValues {
   std::optional<float> intensity, panDeg, tiltDeg, zoomDeg, goboRotationDeg, iris;
   std::optional<glm::vec3> color;
   std::optional<std::string> gobo;
+  // The second gobo wheel and continuous rotation (docs/show-format.md, "Attributes").
+  std::optional<std::string> gobo2, color2;
+  std::optional<float> ctoMired;  // docs/physics.md, "Colour temperature correction"
+  std::optional<float> gobo2RotationDeg, goboSpinDegS, gobo2SpinDegS, prismSpinDegS;
   std::map<int, CellValues> cells;  // by cell index (0-based; the file counts from 1)
   // Beam optics beyond the gobo (docs/show-format.md).
   std::optional<float> frost, prismRotationDeg, bladeRotationDeg;

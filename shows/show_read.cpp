@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fixtures/color.h"
 #include "shows/cue_number.h"
 #include "shows/effects.h"
 #include "shows/palettes.h"
@@ -217,6 +218,8 @@ class Reader {
 };
 
 constexpr double kInf = INFINITY;
+// A wheel spinning 100 turns a second is far past any motor; a bigger number is a typing slip.
+constexpr double kMaxSpinDegS = 36000.0;
 
 void readVenue(Reader& r, const json& root, Show& show) {
   const json* v = r.member(root, "", "venue", false);
@@ -586,11 +589,15 @@ void readPaletteRefs(Reader& r, const json& j, const std::string& p, PaletteRefs
 // (cues: yes; palettes themselves: no, so references cannot form a cycle).
 void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValues& v, bool allowPalettes) {
   if (allowPalettes)
-    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris", "frost", "prism",
-                      "prism_rotation", "blades", "blade_rotation", "shutter", "cells", "palettes"});
+    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "gobo2", "gobo2_rotation",
+                      "color2", "cto",
+                      "gobo_spin", "gobo2_spin", "iris", "frost", "prism", "prism_rotation", "prism_spin", "blades",
+                      "blade_rotation", "shutter", "cells", "palettes"});
   else
-    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris", "frost", "prism",
-                      "prism_rotation", "blades", "blade_rotation", "shutter", "cells"});
+    r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "gobo2", "gobo2_rotation",
+                      "color2", "cto",
+                      "gobo_spin", "gobo2_spin", "iris", "frost", "prism", "prism_rotation", "prism_spin", "blades",
+                      "blade_rotation", "shutter", "cells"});
   double x = 0;
   auto num = [&](const char* key, double lo, double hi, const char* what, std::optional<float>& out) {
     if (const json* j = r.member(a, p, key, false))
@@ -601,11 +608,18 @@ void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValu
   num("tilt", -kInf, kInf, "a tilt angle in degrees", v.tiltDeg);
   num("zoom", 0.1, 179.0, "a zoom (field angle) in degrees", v.zoomDeg);
   num("gobo_rotation", -kInf, kInf, "a gobo rotation in degrees", v.goboRotationDeg);
+  num("gobo2_rotation", -kInf, kInf, "a gobo rotation in degrees", v.gobo2RotationDeg);
+  num("gobo_spin", -kMaxSpinDegS, kMaxSpinDegS, "a gobo spin in degrees per second", v.goboSpinDegS);
+  num("gobo2_spin", -kMaxSpinDegS, kMaxSpinDegS, "a gobo spin in degrees per second", v.gobo2SpinDegS);
+  num("prism_spin", -kMaxSpinDegS, kMaxSpinDegS, "a prism spin in degrees per second", v.prismSpinDegS);
+  num("cto", -kMaxCtoMired, kMaxCtoMired, "a colour temperature shift in mired", v.ctoMired);
   num("iris", 0.0, 1.0, "an iris", v.iris);
   glm::vec3 c{1.0f};
   if (r.vec3Member(a, p, "color", false, 0.0, 1.0, "a colour component", c)) v.color = c;
   std::string gobo;
   if (r.stringMember(a, p, "gobo", false, "a gobo slot name", gobo, true)) v.gobo = gobo;
+  if (r.stringMember(a, p, "gobo2", false, "a slot name of the second gobo wheel", gobo, true)) v.gobo2 = gobo;
+  if (r.stringMember(a, p, "color2", false, "a slot name of the second colour wheel", gobo, true)) v.color2 = gobo;
   if (const json* cells = r.member(a, p, "cells", false)) readCellValues(r, *cells, p + "/cells", v);
   readOpticsValues(r, a, p, v);
   if (allowPalettes)
@@ -723,7 +737,7 @@ void readTiming(Reader& r, const json& j, const std::string& p, CueTimingDef& t)
 }
 
 constexpr const char* kEffectAttributes[] = {"intensity", "pan", "tilt", "zoom", "iris", "frost", "gobo_rotation",
-                                             "prism_rotation", "color"};
+                                             "gobo2_rotation", "prism_rotation", "color"};
 constexpr size_t kMaxEffectColors = 64;
 
 // "effects": [{"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed", "colors"}]
@@ -793,7 +807,7 @@ void readEffects(Reader& r, const json& j, const std::string& ep, std::vector<Ef
       for (const char* a : kEffectAttributes) known = known || d.attribute == a;
       if (!known)
         r.problem(p + "/attribute", "an effect cannot move \"" + d.attribute + "\"; expected intensity, pan, tilt, zoom, "
-                                    "iris, frost, gobo_rotation, prism_rotation or color (or a circle on position)");
+                                    "iris, frost, gobo_rotation, gobo2_rotation, prism_rotation or color (or a circle on position)");
     }
     const json* colors = r.member(e, p, "colors", false);
     if (d.attribute == "color") {

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -208,6 +209,33 @@ struct Checker {
     }
     if (v.prismRotationDeg && prof.prisms.empty())
       problem(vp + "/prism_rotation", "profile \"" + name + "\" has no prism; expected no prism_rotation");
+    if (v.prismSpinDegS && prof.prisms.empty())
+      problem(vp + "/prism_spin", "profile \"" + name + "\" has no prism; expected no prism_spin");
+    if (v.goboSpinDegS && prof.goboWheels.empty())
+      problem(vp + "/gobo_spin", "profile \"" + name + "\" has no gobo wheel; expected no gobo_spin");
+    if (v.gobo2 && !prof.findGobo(*v.gobo2, 1)) {
+      std::vector<std::string> slots{"\"Open\""};
+      if (prof.goboWheels.size() > 1)
+        for (const WheelSlot& s : prof.goboWheels[1].slots)
+          if (s.name != "Open") slots.push_back("\"" + s.name + "\"");
+      problem(vp + "/gobo2", "profile \"" + name + "\" has no gobo slot \"" + *v.gobo2 +
+                                 "\" on its second gobo wheel; expected one of: " + joinNames(slots));
+    }
+    if (v.color2 && *v.color2 != "Open") {
+      bool found = false;
+      std::vector<std::string> slots{"\"Open\""};
+      if (prof.colorWheels.size() > 1)
+        for (const WheelSlot& s : prof.colorWheels[1].slots) {
+          found = found || s.name == *v.color2;
+          if (s.name != "Open") slots.push_back("\"" + s.name + "\"");
+        }
+      if (!found)
+        problem(vp + "/color2", "profile \"" + name + "\" has no colour slot \"" + *v.color2 +
+                                    "\" on its second colour wheel; expected one of: " + joinNames(slots));
+    }
+    for (auto [key, set] : {std::pair{"gobo2_rotation", v.gobo2RotationDeg.has_value()}, std::pair{"gobo2_spin", v.gobo2SpinDegS.has_value()}})
+      if (set && prof.goboWheels.size() < 2)
+        problem(vp + "/" + key, "profile \"" + name + "\" has no second gobo wheel; expected no " + key);
     const bool bladesIn = v.blades && std::any_of(v.blades->begin(), v.blades->end(),
                                                   [](const glm::vec2& e) { return e.x > 0.0f || e.y > 0.0f; });
     if (bladesIn && !prof.hasBlades)

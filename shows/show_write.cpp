@@ -83,8 +83,14 @@ ojson valuesJson(const CueValues& v) {
   if (v.tiltDeg) o["tilt"] = tidy(*v.tiltDeg);
   if (v.color) o["color"] = vec(*v.color);
   if (v.zoomDeg) o["zoom"] = tidy(*v.zoomDeg);
+  if (v.color2) o["color2"] = *v.color2;
+  if (v.ctoMired) o["cto"] = tidy(*v.ctoMired);
   if (v.gobo) o["gobo"] = *v.gobo;
   if (v.goboRotationDeg) o["gobo_rotation"] = tidy(*v.goboRotationDeg);
+  if (v.gobo2) o["gobo2"] = *v.gobo2;
+  if (v.gobo2RotationDeg) o["gobo2_rotation"] = tidy(*v.gobo2RotationDeg);
+  if (v.goboSpinDegS) o["gobo_spin"] = tidy(*v.goboSpinDegS);
+  if (v.gobo2SpinDegS) o["gobo2_spin"] = tidy(*v.gobo2SpinDegS);
   if (v.iris) o["iris"] = tidy(*v.iris);
   if (!v.cells.empty()) {
     ojson cells = ojson::object();
@@ -99,6 +105,7 @@ ojson valuesJson(const CueValues& v) {
   if (v.frost) o["frost"] = tidy(*v.frost);
   if (v.prism) o["prism"] = *v.prism;
   if (v.prismRotationDeg) o["prism_rotation"] = tidy(*v.prismRotationDeg);
+  if (v.prismSpinDegS) o["prism_spin"] = tidy(*v.prismSpinDegS);
   if (v.blades) {
     ojson blades = ojson::array();
     for (const glm::vec2& ends : *v.blades) blades.push_back(ojson::array({tidy(ends.x), tidy(ends.y)}));

@@ -306,6 +306,7 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   const double exposureS = std::clamp(gui.frameMs / 1000.0, 1.0 / 120.0, 0.1);
   FrameOptions frameOptions;
   frameOptions.bodies = gui.showBodies;
+  frameOptions.clockS = gui.nowS;
   if (flash) frameOptions.time = FrameTime{gui.nowS, exposureS};
   std::vector<std::string> densityWarnings;
   // The field is a still: the hazers at the levels of each list's current cue, its fade done.

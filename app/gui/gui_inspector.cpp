@@ -1,12 +1,17 @@
 // The inspector for the selection (one or many fixtures): name, position and mounting rotation
 // (one fixture), pan and tilt with focus to point, and the attributes: intensity, colour (picker
-// and the profile's colour wheel), zoom, gobo, gobo rotation, iris, shutter, and frost, prism and
-// blades where the profile has them. Shown values are the first
-// selected fixture's on stage; a change sets that attribute of every selected fixture in the
-// programmer (a drag is one undo step). "*" marks attributes the programmer holds.
+// and the profile's colour wheel, the second colour wheel, CTO), zoom, gobo, gobo rotation and
+// spin (both gobo wheels), iris, shutter, and frost, prism and blades where the profile has them.
+// Shown values are the first selected fixture's on stage; a change sets that attribute of every
+// selected fixture in the programmer (a drag is one undo step). "*" marks attributes the
+// programmer holds.
+#include <algorithm>
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "app/gui/gui.h"
+#include "fixtures/color.h"
 
 namespace haze {
 
@@ -58,6 +63,9 @@ void inspectOptics(const Profile& p, const Attributes& a, const CueValues* prog,
     float rotation = a.prismRotationDeg;
     std::snprintf(label, sizeof(label), "Prism rot%s", mark(prog, prog && prog->prismRotationDeg));
     if (track(ImGui::DragFloat(label, &rotation, 0.5f, -3600.0f, 3600.0f, "%.1f deg"))) set.prismRotationDeg = rotation;
+    float spin = a.prismSpinDegS;
+    std::snprintf(label, sizeof(label), "Prism spin%s", mark(prog, prog && prog->prismSpinDegS));
+    if (track(ImGui::DragFloat(label, &spin, 0.5f, -720.0f, 720.0f, "%.1f deg/s"))) set.prismSpinDegS = spin;
   }
   if (p.hasBlades) {
     ImGui::Text("Blades%s", mark(prog, prog && (prog->blades || prog->bladeRotationDeg)));
@@ -171,24 +179,53 @@ void drawInspector(Gui& gui) {
     }
     ImGui::NewLine();
   }
+  if (p.colorWheels.size() > 1) {
+    std::snprintf(label, sizeof(label), "Colour 2%s", mark(prog, prog && prog->color2));
+    if (ImGui::BeginCombo(label, a.color2.c_str())) {
+      if (ImGui::Selectable("Open", a.color2 == "Open")) {
+        set.color2 = "Open";
+        item = ImGui::GetItemID();
+      }
+      for (const WheelSlot& slot : p.colorWheels[1].slots)
+        if (slot.name != "Open" && ImGui::Selectable(slot.name.c_str(), slot.name == a.color2)) {
+          set.color2 = slot.name;
+          item = ImGui::GetItemID();
+        }
+      ImGui::EndCombo();
+    }
+  }
+  float cto = a.ctoMired;
+  std::snprintf(label, sizeof(label), "CTO%s", mark(prog, prog && prog->ctoMired));
+  if (track(ImGui::SliderFloat(label, &cto, -kMaxCtoMired, kMaxCtoMired, "%.0f mired"))) set.ctoMired = cto;
   if (p.zoomDeg.max > p.zoomDeg.min) {
     float zoom = a.zoomDeg.value_or(p.fieldAngleDeg);
     std::snprintf(label, sizeof(label), "Zoom%s", mark(prog, prog && prog->zoomDeg));
     if (track(ImGui::SliderFloat(label, &zoom, p.zoomDeg.min, p.zoomDeg.max, "%.1f deg"))) set.zoomDeg = zoom;
   }
-  if (!p.goboWheels.empty()) {
-    std::snprintf(label, sizeof(label), "Gobo%s", mark(prog, prog && prog->gobo));
-    if (ImGui::BeginCombo(label, a.gobo.c_str())) {
-      for (const WheelSlot& slot : p.goboWheels.front().slots)
-        if (ImGui::Selectable(slot.name.c_str(), slot.name == a.gobo)) {
-          set.gobo = slot.name;
+  // One slot combo, rotation and spin per gobo wheel haze models (two).
+  for (size_t w = 0; w < std::min<size_t>(p.goboWheels.size(), 2); ++w) {
+    const bool first = w == 0;
+    const std::string& slotNow = first ? a.gobo : a.gobo2;
+    std::optional<std::string>& slotSet = first ? set.gobo : set.gobo2;
+    std::snprintf(label, sizeof(label), "Gobo%s%s", first ? "" : " 2", mark(prog, prog && (first ? prog->gobo : prog->gobo2)));
+    if (ImGui::BeginCombo(label, slotNow.c_str())) {
+      for (const WheelSlot& slot : p.goboWheels[w].slots)
+        if (ImGui::Selectable(slot.name.c_str(), slot.name == slotNow)) {
+          slotSet = slot.name;
           item = ImGui::GetItemID();
         }
       ImGui::EndCombo();
     }
-    float rotation = a.goboRotationDeg;
-    std::snprintf(label, sizeof(label), "Gobo rot%s", mark(prog, prog && prog->goboRotationDeg));
-    if (track(ImGui::DragFloat(label, &rotation, 0.5f, -3600.0f, 3600.0f, "%.1f deg"))) set.goboRotationDeg = rotation;
+    float rotation = first ? a.goboRotationDeg : a.gobo2RotationDeg;
+    std::snprintf(label, sizeof(label), "Gobo%s rot%s", first ? "" : " 2",
+                  mark(prog, prog && (first ? prog->goboRotationDeg : prog->gobo2RotationDeg)));
+    if (track(ImGui::DragFloat(label, &rotation, 0.5f, -3600.0f, 3600.0f, "%.1f deg")))
+      (first ? set.goboRotationDeg : set.gobo2RotationDeg) = rotation;
+    float spin = first ? a.goboSpinDegS : a.gobo2SpinDegS;
+    std::snprintf(label, sizeof(label), "Gobo%s spin%s", first ? "" : " 2",
+                  mark(prog, prog && (first ? prog->goboSpinDegS : prog->gobo2SpinDegS)));
+    if (track(ImGui::DragFloat(label, &spin, 0.5f, -720.0f, 720.0f, "%.1f deg/s")))
+      (first ? set.goboSpinDegS : set.gobo2SpinDegS) = spin;
   }
   float iris = a.iris;
   std::snprintf(label, sizeof(label), "Iris%s", mark(prog, prog && prog->iris));

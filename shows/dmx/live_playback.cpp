@@ -17,6 +17,13 @@ void merge(CueValues& into, const CueValues& v) {
   if (v.iris) into.iris = v.iris;
   if (v.color) into.color = v.color;
   if (v.gobo) into.gobo = v.gobo;
+  if (v.gobo2) into.gobo2 = v.gobo2;
+  if (v.color2) into.color2 = v.color2;
+  if (v.ctoMired) into.ctoMired = v.ctoMired;
+  if (v.gobo2RotationDeg) into.gobo2RotationDeg = v.gobo2RotationDeg;
+  if (v.goboSpinDegS) into.goboSpinDegS = v.goboSpinDegS;
+  if (v.gobo2SpinDegS) into.gobo2SpinDegS = v.gobo2SpinDegS;
+  if (v.prismSpinDegS) into.prismSpinDegS = v.prismSpinDegS;
 }
 }  // namespace
 

@@ -56,6 +56,13 @@ void compareField(const Attributes& before, const CueValues& p, Same same, Diffe
   check(&CueValues::iris, p.iris, p.iris && *p.iris == before.iris);
   check(&CueValues::color, p.color, p.color && *p.color == before.color);
   check(&CueValues::gobo, p.gobo, p.gobo && *p.gobo == before.gobo);
+  check(&CueValues::gobo2, p.gobo2, p.gobo2 && *p.gobo2 == before.gobo2);
+  check(&CueValues::color2, p.color2, p.color2 && *p.color2 == before.color2);
+  check(&CueValues::ctoMired, p.ctoMired, p.ctoMired && *p.ctoMired == before.ctoMired);
+  check(&CueValues::gobo2RotationDeg, p.gobo2RotationDeg, p.gobo2RotationDeg && *p.gobo2RotationDeg == before.gobo2RotationDeg);
+  check(&CueValues::goboSpinDegS, p.goboSpinDegS, p.goboSpinDegS && *p.goboSpinDegS == before.goboSpinDegS);
+  check(&CueValues::gobo2SpinDegS, p.gobo2SpinDegS, p.gobo2SpinDegS && *p.gobo2SpinDegS == before.gobo2SpinDegS);
+  check(&CueValues::prismSpinDegS, p.prismSpinDegS, p.prismSpinDegS && *p.prismSpinDegS == before.prismSpinDegS);
   check(&CueValues::frost, p.frost, p.frost && *p.frost == before.frost);
   check(&CueValues::prism, p.prism, p.prism && *p.prism == before.prism);
   check(&CueValues::prismRotationDeg, p.prismRotationDeg, p.prismRotationDeg && *p.prismRotationDeg == before.prismRotationDeg);

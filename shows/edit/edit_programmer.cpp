@@ -39,7 +39,8 @@ Entries entriesOf(const Programmer& p, const std::vector<int>& ids) {
 
 bool finiteValues(const CueValues& v) {
   for (const auto& f : {v.intensity, v.panDeg, v.tiltDeg, v.zoomDeg, v.goboRotationDeg, v.iris, v.frost, v.prismRotationDeg,
-                        v.bladeRotationDeg})
+                        v.bladeRotationDeg, v.gobo2RotationDeg, v.goboSpinDegS, v.gobo2SpinDegS, v.prismSpinDegS,
+                        v.ctoMired})
     if (f && !std::isfinite(*f)) return false;
   if (v.shutter && !(std::isfinite(v.shutter->rateHz) && std::isfinite(v.shutter->duty))) return false;
   if (v.blades)
@@ -97,6 +98,13 @@ class SetProgrammer final : public EditCommand {
       if (v.iris) p.iris = v.iris;
       if (v.color) p.color = v.color;
       if (v.gobo) p.gobo = v.gobo;
+      if (v.gobo2) p.gobo2 = v.gobo2;
+      if (v.color2) p.color2 = v.color2;
+      if (v.ctoMired) p.ctoMired = v.ctoMired;
+      if (v.gobo2RotationDeg) p.gobo2RotationDeg = v.gobo2RotationDeg;
+      if (v.goboSpinDegS) p.goboSpinDegS = v.goboSpinDegS;
+      if (v.gobo2SpinDegS) p.gobo2SpinDegS = v.gobo2SpinDegS;
+      if (v.prismSpinDegS) p.prismSpinDegS = v.prismSpinDegS;
       if (v.frost) p.frost = v.frost;
       if (v.prism) p.prism = v.prism;
       if (v.prismRotationDeg) p.prismRotationDeg = v.prismRotationDeg;

@@ -2,9 +2,12 @@
 // floor pool where the reference cuts it (every pixel more than one pixel from a blade's edge in
 // the reference image is lit or dark on the GPU too), and a 3-facet prism's three pools in haze
 // agree with the reference image within the tolerance of beams_vs_reference_test.cpp. The frame
-// builder turns a show's prism into N beams of 1/N and a still strobe into its duty.
+// builder turns a show's prism into N beams of 1/N and a still strobe into its duty. Two gobo
+// wheels: the GPU's pool agrees with the reference and differs from the one-gobo pool; the
+// frame builder turns spinning wheels to rotation + spin * clock.
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -114,6 +117,84 @@ TEST_F(OpticsRender, PrismPoolsInHazeAgreeWithTheReference) {
   EXPECT_LT(c->meanRelError, 0.03);
   if (c->meanRelError >= 0.03)
     for (const auto& file : writeDiagnostics("prism_high", gpu, ref)) std::printf("[ prism ] wrote %s\n", file.c_str());
+}
+
+// An 8 x 8 gobo whose left half passes `left` and right half `right`.
+std::shared_ptr<GoboImage> halves(float left, float right) {
+  auto g = std::make_shared<GoboImage>();
+  g->width = g->height = 8;
+  g->transmittance.resize(64);
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i) g->transmittance[static_cast<size_t>(j * 8 + i)] = i < 4 ? left : right;
+  return g;
+}
+
+TEST_F(OpticsRender, TwoGobosOnTheGpuAgreeWithTheReference) {
+  Venue venue = floorVenue(16.0f, 0.5f);
+  auto r = Renderer::create(venue, renderSettingsFor(Quality::High, kSize, kSize));
+  ASSERT_TRUE(r.ok()) << (r.ok() ? "" : r.error().str());
+  auto draw = [&](bool second) {
+    FrameState frame = topDown();
+    BeamState b = downlight(24.0f, 30.0f, 20000.0f);
+    b.optics.gobo = halves(1.0f, 0.5f);
+    if (second) {
+      b.optics.gobo2 = halves(0.8f, 0.1f);
+      b.optics.gobo2RotationDeg = 90.0f;
+    }
+    frame.beams.push_back(b);
+    (*r)->render(frame);
+    return std::pair{(*r)->readRadiance(), renderReference(venue, frame, kSize, kSize)};
+  };
+  const auto [one, oneRef] = draw(false);
+  const auto [two, twoRef] = draw(true);
+  const auto c = compareImages(two, twoRef);
+  ASSERT_TRUE(c.ok());
+  double sumOne = 0, sumTwo = 0;
+  for (size_t k = 0; k < one.pixels.size(); ++k) {
+    sumOne += one.pixels[k].g;
+    sumTwo += two.pixels[k].g;
+  }
+  std::printf("[ two gobos ] mean relative error %.4f over %zu values; GPU pool with gobo 2 / without %.4f\n",
+              c->meanRelError, c->values, sumTwo / sumOne);
+  EXPECT_LT(c->meanRelError, 0.03);
+  // By hand: gobo 2 passes 0.8 over half the pool and 0.1 over the other half, on top of gobo 1.
+  EXPECT_LT(sumTwo / sumOne, 0.6);
+  EXPECT_GT(sumTwo / sumOne, 0.3);
+  if (c->meanRelError >= 0.03)
+    for (const auto& file : writeDiagnostics("two_gobos", two, twoRef)) std::printf("[ two gobos ] wrote %s\n", file.c_str());
+}
+
+TEST(OpticsFrame, SpinningWheelsStandAtRotationPlusSpinTimesTheClock) {
+  Show show;
+  show.file = "spin.haze.json";
+  show.fixtures.push_back(FixtureDef{.id = 1, .name = "", .profile = "spot", .mode = "", .position = {0, 5, 0}, .rotationDeg = {}, .patch = {}});
+  auto profile = std::make_shared<Profile>();
+  auto d = parametricDistribution(10.0f, 16.0f, 1000.0f);
+  ASSERT_TRUE(d.ok());
+  profile->distribution = std::make_shared<const Distribution>(*d);
+  profile->fieldAngleDeg = 16.0f;
+  profile->zoomDeg = {16.0f, 16.0f};
+  ProfileSet profiles{{"spot", profile}};
+  StageState stage;
+  Attributes a;
+  a.intensity = 1.0f;
+  a.goboRotationDeg = 10.0f;
+  a.goboSpinDegS = 30.0f;
+  a.gobo2RotationDeg = -5.0f;
+  a.gobo2SpinDegS = -20.0f;
+  stage[1] = a;
+  for (double t : {0.0, 0.5, 2.0}) {
+    auto f = buildFrame(show, profiles, stage, "", FrameOptions{.clockS = t});
+    ASSERT_TRUE(f.ok());
+    ASSERT_EQ(f->beams.size(), 1u);
+    EXPECT_NEAR(f->beams[0].optics.goboRotationDeg, 10.0 + 30.0 * t, 1e-4) << t;
+    EXPECT_NEAR(f->beams[0].optics.gobo2RotationDeg, -5.0 - 20.0 * t, 1e-4) << t;
+  }
+  // Different angles are different light maps.
+  auto f0 = buildFrame(show, profiles, stage, "", FrameOptions{.clockS = 0.0});
+  auto f1 = buildFrame(show, profiles, stage, "", FrameOptions{.clockS = 1.0});
+  ASSERT_TRUE(f0.ok() && f1.ok());
+  EXPECT_NE(f0->beams[0].opticsKey, f1->beams[0].opticsKey);
 }
 
 TEST(OpticsFrame, PrismBecomesNBeamsAndAStillStrobeItsDuty) {

@@ -74,6 +74,83 @@ TEST(GdtfOptics, BmflHasTwoSixFacetPrismsFrostAndAFullShutter) {
   EXPECT_GT(decodeOne(p, m, DmxAttribute::Frost, 40).frost, 0.3f);
 }
 
+TEST(GdtfOptics, BmflHasTwoGoboWheelsAndGobo2DrivesTheSecond) {
+  auto g = loadGdtf(kGdtfDir / "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  ASSERT_TRUE(g.ok()) << g.error().str();
+  const Profile& p = *g->profile;
+  // <Wheel Name="Gobo1"> and <Wheel Name="Gobo2">: Open and six gobos each.
+  ASSERT_EQ(p.goboWheels.size(), 2u);
+  EXPECT_EQ(p.goboWheels[0].slots.size(), 7u);
+  EXPECT_EQ(p.goboWheels[1].slots.size(), 7u);
+  EXPECT_EQ(p.goboWheels[1].slots[2].name, "G02 (Radial Dashes 18)");
+  ASSERT_EQ(p.colorWheels.size(), 2u);
+  const DmxMode& m = p.modes.at(0);
+  // Mode 1: Gobo1 at offset 23, Gobo1Pos 24-25, Gobo2 at 26, Gobo2Pos 27-28, Color2 at 9-10.
+  EXPECT_EQ(m.channels[22].attribute, DmxAttribute::Gobo);
+  EXPECT_EQ(m.channels[22].wheel, 0);
+  EXPECT_EQ(m.channels[25].attribute, DmxAttribute::Gobo);
+  EXPECT_EQ(m.channels[25].wheel, 1);
+  EXPECT_EQ(m.channels[26].attribute, DmxAttribute::GoboRotation);
+  EXPECT_EQ(m.channels[26].wheel, 1);
+  EXPECT_EQ(m.channels[26].bytes, 2);
+  EXPECT_EQ(m.channels[8].attribute, DmxAttribute::ColorWheel);
+  EXPECT_EQ(m.channels[8].wheel, 1);
+  // Gobo2 "Gobo 2" from DMX 9 is WheelSlotIndex 3; Gobo2Pos -180..180 over 0..65535.
+  std::vector<uint8_t> dmx(m.channels.size(), 0);
+  dmx[25] = 10;
+  dmx[26] = 255;
+  dmx[27] = 255;
+  const Attributes a = decodeDmx(p, m, dmx);
+  EXPECT_EQ(a.gobo, "Open");
+  EXPECT_EQ(a.gobo2, "G02 (Radial Dashes 18)");
+  EXPECT_NEAR(a.gobo2RotationDeg, 180.0f, 1e-3f);
+  EXPECT_NEAR(a.goboRotationDeg, -180.0f, 1e-3f);  // Gobo1Pos at 0
+  // Color2 (16 bit) "Pink - Positioning" from 4626 (coarse 18) is WheelSlotIndex 2, the second
+  // wheel's "C01 (Pink)"; CTO at offset 14 runs 0..1 of a full CTO, +159 mired.
+  EXPECT_EQ(a.color2, "Open");
+  EXPECT_EQ(a.ctoMired, 0.0f);
+  EXPECT_EQ(m.channels[13].attribute, DmxAttribute::Cto);
+  dmx[8] = 20;
+  dmx[13] = 255;
+  const Attributes c = decodeDmx(p, m, dmx);
+  EXPECT_EQ(c.color2, "C01 (Pink)");
+  EXPECT_NEAR(c.ctoMired, 159.0f, 1e-3f);
+  EXPECT_EQ(c.color, a.color);  // the second wheel is its own attribute, not folded in
+}
+
+// The BMFL tells index from spin by its gobo and prism channels (ModeMaster on a SelectSpin
+// range): Gobo1 32-59 is "Gobo n - Rotation", and then Gobo1Pos (16 bit) runs -30 -> 30 deg/s.
+TEST(GdtfOptics, BmflSpinsWhenItsWheelChannelSelectsSpinning) {
+  auto g = loadGdtf(kGdtfDir / "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  ASSERT_TRUE(g.ok()) << g.error().str();
+  const Profile& p = *g->profile;
+  const DmxMode& m = p.modes.at(0);
+  ASSERT_TRUE(m.channels[23].spinWhenSelected.has_value());
+  std::vector<uint8_t> dmx(m.channels.size(), 0);
+  dmx[22] = 34;  // Gobo1 "Gobo 1 - Rotation"
+  Attributes a = decodeDmx(p, m, dmx);
+  EXPECT_EQ(a.gobo, p.goboWheels[0].slots[1].name);
+  EXPECT_NEAR(a.goboSpinDegS, -30.0f, 1e-3f);  // Gobo1Pos at 0: forwards fast
+  EXPECT_EQ(a.goboRotationDeg, 0.0f);
+  dmx[23] = dmx[24] = 255;
+  EXPECT_NEAR(decodeDmx(p, m, dmx).goboSpinDegS, 30.0f, 1e-3f);
+  dmx[23] = 128;
+  dmx[24] = 0;  // the middle: still, within one step of 60 / 65535 deg/s
+  EXPECT_NEAR(decodeDmx(p, m, dmx).goboSpinDegS, 0.0f, 1e-3f);
+  // Gobo1 at 10 indexes: the same Gobo1Pos is an angle, -180 -> 180 degrees.
+  dmx[22] = 10;
+  dmx[23] = dmx[24] = 255;
+  a = decodeDmx(p, m, dmx);
+  EXPECT_NEAR(a.goboRotationDeg, 180.0f, 1e-3f);
+  EXPECT_EQ(a.goboSpinDegS, 0.0f);
+  // Prism1 50-75 selects spinning: Prism1Pos (8 bit) at 255 is +30 deg/s.
+  dmx[28] = 60;
+  dmx[29] = 255;
+  a = decodeDmx(p, m, dmx);
+  EXPECT_NEAR(a.prismSpinDegS, 30.0f, 1e-3f);
+  EXPECT_EQ(a.prismRotationDeg, 0.0f);
+}
+
 TEST(GdtfOptics, AlphaSpotNamesItsThreeFacetPrismAndPulses) {
   auto g = loadGdtf(kGdtfDir / "Clay Paky@Alpha Spot QWO 800@allWorking.gdtf");
   ASSERT_TRUE(g.ok()) << g.error().str();
@@ -116,6 +193,9 @@ std::string bladeFixture() {
   channels += channel(offset++, "Prism1", R"(<ChannelFunction Attribute="Prism1" DMXFrom="0/1" Wheel="P">
               <ChannelSet DMXFrom="0/1" Name="Open" WheelSlotIndex="1"/>
               <ChannelSet DMXFrom="128/1" Name="Many" WheelSlotIndex="2"/></ChannelFunction>)");
+  // One channel, two ranges: an angle over 0-127, a spin of -60 -> 60 deg/s over 128-255.
+  channels += channel(offset++, "Prism1Pos", R"(<ChannelFunction Attribute="Prism1Pos" DMXFrom="0/1" PhysicalFrom="0" PhysicalTo="360"/>
+              <ChannelFunction Attribute="Prism1PosRotate" DMXFrom="128/1" PhysicalFrom="-60" PhysicalTo="60"/>)");
   std::string facets;
   for (int i = 0; i < 40; ++i) facets += R"(<Facet Rotation="{1,0,0}{0,1,0}{)" + std::to_string(std::cos(i * 0.157)) + "," +
                                          std::to_string(std::sin(i * 0.157)) + R"(,1}"/>)";
@@ -165,6 +245,20 @@ TEST(GdtfOptics, ReadsFramingBladesAndClampsAPrismOfFortyFacets) {
   EXPECT_EQ(a.prism, "Many");
   dmx[8] = 128;  // Blade4B at 50 "percent": all the way in once clamped
   EXPECT_FLOAT_EQ(decodeDmx(p, m, dmx).blades[3].y, 1.0f);
+  // Prism1Pos: in the index range an angle (0 -> 360 over 0-127), in the rotate range a spin.
+  ASSERT_EQ(m.channels[11].spinRanges.size(), 1u);
+  EXPECT_EQ(m.channels[11].spinRanges[0].from, 128);
+  EXPECT_EQ(m.channels[11].spinRanges[0].to, 255);
+  dmx[11] = 64;
+  Attributes turn = decodeDmx(p, m, dmx);
+  EXPECT_NEAR(turn.prismRotationDeg, 64.0f / 127.0f * 360.0f, 1e-3f);
+  EXPECT_EQ(turn.prismSpinDegS, 0.0f);
+  for (const auto& [value, degS] : {std::pair{128, -60.0f}, std::pair{255, 60.0f}, std::pair{200, -60.0f + 120.0f * 72.0f / 127.0f}}) {
+    dmx[11] = static_cast<uint8_t>(value);
+    turn = decodeDmx(p, m, dmx);
+    EXPECT_NEAR(turn.prismSpinDegS, degS, 1e-3f) << value;
+    EXPECT_EQ(turn.prismRotationDeg, 0.0f) << value;
+  }
   std::filesystem::remove_all(dir);
 }
 

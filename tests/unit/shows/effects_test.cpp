@@ -185,7 +185,7 @@ TEST(Effects, SaveBackAndBadEffectsAreRefused) {
             "/cue_lists/0/cues/0/effects/3/shape: unknown effect shape \"saw\"; expected sine, circle, square, ramp or random");
   EXPECT_EQ(problemAt("\"attribute\": \"iris\"", "\"attribute\": \"gobo\""),
             "/cue_lists/0/cues/0/effects/2/attribute: an effect cannot move \"gobo\"; expected intensity, pan, tilt, zoom, "
-            "iris, frost, gobo_rotation, prism_rotation or color (or a circle on position)");
+            "iris, frost, gobo_rotation, gobo2_rotation, prism_rotation or color (or a circle on position)");
   EXPECT_EQ(problemAt("\"group\": \"Back\", \"rate\": 1.5", "\"group\": \"Front\", \"rate\": 1.5"),
             "/cue_lists/0/cues/0/effects/2/group: the effect names group \"Front\", which is not in /groups; expected "
             "one of: \"Back\"");

@@ -51,6 +51,62 @@ TEST(OpticsValues, ReadAndWriteBack) {
   EXPECT_NE(showToText(c.show).find("\"shutter\": \"closed\""), std::string::npos);
 }
 
+// The second gobo wheel and the spins: read, written back byte-stable, absent when not given.
+TEST(OpticsValues, SecondGoboAndSpinsReadAndWriteBack) {
+  ShowParse p = parseShowText(withValues(R"({"gobo2": "Leaves", "gobo2_rotation": -20, "gobo_spin": 30,
+      "gobo2_spin": -45.5, "prism_spin": 90})"), test::validShowPath());
+  ASSERT_TRUE(p.problems.empty()) << p.problems[0].str();
+  const CueValues& v = p.show.cueLists[0].cues[0].values.at(101);
+  EXPECT_EQ(*v.gobo2, "Leaves");
+  EXPECT_FLOAT_EQ(*v.gobo2RotationDeg, -20.0f);
+  EXPECT_FLOAT_EQ(*v.goboSpinDegS, 30.0f);
+  EXPECT_FLOAT_EQ(*v.gobo2SpinDegS, -45.5f);
+  EXPECT_FLOAT_EQ(*v.prismSpinDegS, 90.0f);
+  const std::string text = showToText(p.show);
+  ShowParse q = parseShowText(text, test::validShowPath());
+  ASSERT_TRUE(q.problems.empty()) << q.problems[0].str();
+  EXPECT_EQ(q.show.cueLists[0].cues[0].values.at(101), v);
+  EXPECT_EQ(showToText(q.show), text);
+  // A cue without them writes none of their keys.
+  ShowParse plain = parseShowText(withValues(R"({"intensity": 1, "gobo_rotation": 5})"), test::validShowPath());
+  ASSERT_TRUE(plain.problems.empty());
+  const std::string plainText = showToText(plain.show);
+  for (const char* key : {"gobo2", "_spin"}) EXPECT_EQ(plainText.find(key), std::string::npos) << key;
+  // A spin past 100 turns a second is a slip.
+  ShowParse fast = parseShowText(withValues(R"({"gobo_spin": 40000})"), test::validShowPath());
+  ASSERT_FALSE(fast.problems.empty());
+  EXPECT_EQ(fast.problems[0].place, "/cue_lists/0/cues/0/values/101/gobo_spin");
+}
+
+TEST(OpticsValues, SecondGoboSwitchesItsRotationAndSpinsFade) {
+  Attributes from, to;
+  to.gobo2 = "Leaves";
+  to.gobo2RotationDeg = 90.0f;
+  to.goboSpinDegS = 40.0f;
+  to.gobo2SpinDegS = -20.0f;
+  to.prismSpinDegS = 10.0f;
+  const Attributes half = blendAttributes(from, to, 0.5, std::nullopt);
+  EXPECT_EQ(half.gobo2, "Leaves");  // switched when the fade started, as gobo does
+  EXPECT_FLOAT_EQ(half.gobo2RotationDeg, 45.0f);
+  EXPECT_FLOAT_EQ(half.goboSpinDegS, 20.0f);
+  EXPECT_FLOAT_EQ(half.gobo2SpinDegS, -10.0f);
+  EXPECT_FLOAT_EQ(half.prismSpinDegS, 5.0f);
+  EXPECT_EQ(blendAttributes(from, to, -1.0, std::nullopt).gobo2, "Open");
+  Attributes a;
+  CueValues v;
+  v.gobo2 = "Leaves";
+  v.gobo2SpinDegS = 12.0f;
+  overlayValues(a, v);
+  EXPECT_EQ(a.gobo2, "Leaves");
+  EXPECT_FLOAT_EQ(a.gobo2SpinDegS, 12.0f);
+  EXPECT_EQ(a.gobo, "Open");
+  // A look recorded from the stage carries them only where they are in.
+  EXPECT_FALSE(cueValuesOf(Attributes{}).gobo2.has_value());
+  EXPECT_FALSE(cueValuesOf(Attributes{}).goboSpinDegS.has_value());
+  EXPECT_EQ(*cueValuesOf(a).gobo2, "Leaves");
+  EXPECT_FLOAT_EQ(*cueValuesOf(a).gobo2SpinDegS, 12.0f);
+}
+
 TEST(OpticsValues, RefusedAtTheirPlace) {
   const std::pair<const char*, const char*> bad[] = {
       {R"({"frost": 1.5})", "/frost"},

@@ -72,6 +72,13 @@ const std::vector<Broken>& brokenShows() {
        "/cue_lists/0/cues/1/values/101/zoom", "expected 8 to 40"},
       {"unknown gobo slot", [](json& j) { set(j, "/cue_lists/0/cues/0/values/101/gobo", "Moon"); },
        "/cue_lists/0/cues/0/values/101/gobo", "no gobo slot \"Moon\""},
+      // The test spot has one gobo wheel and no prism.
+      {"a second gobo wheel the profile lacks", [](json& j) { set(j, "/cue_lists/0/cues/0/values/101/gobo2", "Dots"); },
+       "/cue_lists/0/cues/0/values/101/gobo2", "no gobo slot \"Dots\" on its second gobo wheel"},
+      {"a second wheel's spin the profile lacks", [](json& j) { set(j, "/cue_lists/0/cues/0/values/101/gobo2_spin", 10); },
+       "/cue_lists/0/cues/0/values/101/gobo2_spin", "has no second gobo wheel"},
+      {"a prism spin without a prism", [](json& j) { set(j, "/cue_lists/0/cues/0/values/101/prism_spin", 10); },
+       "/cue_lists/0/cues/0/values/101/prism_spin", "has no prism"},
       {"duplicate cue number", [](json& j) { set(j, "/cue_lists/0/cues/1/number", "1.0"); },
        "/cue_lists/0/cues/1/number", "repeats cue \"1\""},
       {"decreasing cue number", [](json& j) { set(j, "/cue_lists/0/cues/2/number", "1.5"); },
