@@ -135,7 +135,7 @@ int runStudy(int width, int height) {
 constexpr const char* kBenchUsage =
     "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells separate|merged]]\n"
     "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
-    "                  [--min-samples M] [--density N] [--compare-reference] [--json]\n"
+    "                  [--min-samples M] [--density N] [--no-bodies] [--compare-reference] [--json]\n"
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
     "first unless --cue, from the show's first camera unless --camera) per frame and per pass;\n"
@@ -143,12 +143,13 @@ constexpr const char* kBenchUsage =
     "--compare-reference also renders the CPU reference and gives the mean relative error; --study runs\n"
     "the virtual-plane accuracy study. --density N also renders the frame through an N^3 density field\n"
     "with a hazer (the bench scene's: docs/rendering.md, \"Density\"), alternating frame by frame with the\n"
-    "uniform medium, and gives the cost ratio.\n";
+    "uniform medium, and gives the cost ratio. --no-bodies leaves the fixtures' housings out (to time\n"
+    "what they cost: docs/rendering.md, \"Fixture bodies\").\n";
 
 int runBench(const Args& args) {
   int fixtures = -1, width = 1280, height = 720, frames = 5;
   std::string quality = "default", showPath, cue, camera, cells = "separate";
-  bool json = false, compare = false, study = false;
+  bool json = false, compare = false, study = false, noBodies = false;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
   int densityCells = 0;
   CommandLine cli("haze bench", kBenchUsage);
@@ -162,6 +163,7 @@ int runBench(const Args& args) {
       .choice("--quality", quality, {"draft", "default", "high", "reference"})
       .flag("--json", json)
       .flag("--compare-reference", compare)
+      .flag("--no-bodies", noBodies)
       .flag("--study", study)
       .integer("--planes", planes, 1, 4096, "1..4096")
       .integer("--scatter-divisor", divisor, 1, 8, "1..8")
@@ -187,6 +189,10 @@ int runBench(const Args& args) {
     frame = benchFrame(fixtures);
   } else if (Status s = loadBenchShow(showPath, cue, camera, cells == "merged", venue, frame, fixtures); !s) {
     return fail(s.error().str());
+  }
+  if (noBodies) {  // the fixtures' housings left out, as haze render --no-bodies does
+    frame.bodies.clear();
+    frame.bodyMeshes.clear();
   }
   RenderSettings settings = renderSettingsFor(*q, width, height);
   settings.timePasses = true;
