@@ -316,3 +316,7 @@ put('mesh', 'ok-cube.3ds', tds(cube_v, cube_f))
 put('mesh', 'ok-triangle.glb', glb(doc, buf))
 put('mesh', 'bad-no-faces.3ds', tds(cube_v, []))
 put('mesh', 'bad-truncated.3ds', tds(cube_v, cube_f)[:40])
+# A JSON chunk that declares 2.9 GB (found by the fuzzer: assimp allocated it before reading).
+huge_chunk = bytearray(glb(doc, buf))
+huge_chunk[12:16] = struct.pack('<I', 0xae000310)
+put('mesh', 'bad-glb-chunk-length.glb', bytes(huge_chunk))
