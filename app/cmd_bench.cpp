@@ -135,7 +135,8 @@ int runStudy(int width, int height) {
 constexpr const char* kBenchUsage =
     "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells separate|merged]]\n"
     "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
-    "                  [--min-samples M] [--refine C] [--density N] [--compare-reference] [--json]\n"
+    "                  [--min-samples M] [--refine C] [--density N] [--no-bodies | --compare-bodies]\n"
+    "                  [--compare-reference] [--json]\n"
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
     "first unless --cue, from the show's first camera unless --camera) per frame and per pass;\n"
@@ -143,12 +144,14 @@ constexpr const char* kBenchUsage =
     "--compare-reference also renders the CPU reference and gives the mean relative error; --study runs\n"
     "the virtual-plane accuracy study. --density N also renders the frame through an N^3 density field\n"
     "with a hazer (the bench scene's: docs/rendering.md, \"Density\"), alternating frame by frame with the\n"
-    "uniform medium, and gives the cost ratio.\n";
+    "uniform medium, and gives the cost ratio. --no-bodies leaves the fixtures' housings out;\n"
+    "--compare-bodies also renders the frame without them, alternating frame by frame, and gives the\n"
+    "bodies' share of the frame (docs/rendering.md, \"Fixture bodies\").\n";
 
 int runBench(const Args& args) {
   int fixtures = -1, width = 1280, height = 720, frames = 5;
   std::string quality = "default", showPath, cue, camera, cells = "separate";
-  bool json = false, compare = false, study = false;
+  bool json = false, compare = false, study = false, noBodies = false, compareBodies = false;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
   double refine = -1.0;                            // -1: the preset's
   int densityCells = 0;
@@ -163,6 +166,8 @@ int runBench(const Args& args) {
       .choice("--quality", quality, {"draft", "default", "high", "reference"})
       .flag("--json", json)
       .flag("--compare-reference", compare)
+      .flag("--no-bodies", noBodies)
+      .flag("--compare-bodies", compareBodies)
       .flag("--study", study)
       .integer("--planes", planes, 1, 4096, "1..4096")
       .integer("--scatter-divisor", divisor, 1, 8, "1..8")
@@ -190,6 +195,12 @@ int runBench(const Args& args) {
   } else if (Status s = loadBenchShow(showPath, cue, camera, cells == "merged", venue, frame, fixtures); !s) {
     return fail(s.error().str());
   }
+  if (noBodies && compareBodies) return fail("--no-bodies and --compare-bodies exclude each other");
+  if (compareBodies && densityCells > 0) return fail("--compare-bodies and --density exclude each other");
+  if (noBodies) {  // the fixtures' housings left out, as haze render --no-bodies does
+    frame.bodies.clear();
+    frame.bodyMeshes.clear();
+  }
   RenderSettings settings = renderSettingsFor(*q, width, height);
   settings.timePasses = true;
   if (planes > 0) settings.planes = planes;
@@ -207,6 +218,15 @@ int runBench(const Args& args) {
     DensitySim sim(spec, densityGrid(spec, venue.boundsMin, venue.boundsMax));
     denseFrame = frame;
     denseFrame.medium.density = std::make_shared<DensityField>(sim.fieldAt(spec.warmupS));
+    auto r = Renderer::create(venue, settings);
+    if (!r) return fail(r.error().str());
+    dense = std::move(*r);
+  }
+  // The same frame without bodies, the same way: what the bodies cost.
+  if (compareBodies) {
+    denseFrame = frame;
+    denseFrame.bodies.clear();
+    denseFrame.bodyMeshes.clear();
     auto r = Renderer::create(venue, settings);
     if (!r) return fail(r.error().str());
     dense = std::move(*r);
@@ -297,7 +317,15 @@ int runBench(const Args& args) {
   out["light_map_layers"] = lightLayers;
   out["peak_memory_mb"] = peakMemoryMb();
   out["warnings"] = warnings;
-  if (dense) {
+  if (dense && compareBodies) {
+    const double with = median(total), without = median(denseTotal);
+    out["bodies"] = {{"boxes", frame.bodies.size()},
+                     {"meshes", frame.bodyMeshes.size()},
+                     {"median_frame_ms_without", without},
+                     {"pass_ms_without", {{"surfaces", median(denseSurfaces)}, {"planes", median(denseBeams)}}},
+                     {"ratio_frame", without > 0 ? with / without : 0.0},
+                     {"share_of_frame", with > 0 ? (with - without) / with : 0.0}};
+  } else if (dense) {
     out["density"] = {{"grid", densityCells},
                       {"median_frame_ms", median(denseTotal)},
                       {"median_frame_cpu_ms", median(denseCpu)},
@@ -335,7 +363,12 @@ int runBench(const Args& args) {
                   rs.refineCurvature);
     std::printf("  shadow maps %d px, %d light maps, %.1f beams per lit surface tile; peak memory %.0f MB\n", shadowSize,
                 lightLayers, beamsPerTile, peakMemoryMb());
-    if (dense)
+    if (dense && compareBodies)
+      std::printf("  bodies (%zu boxes, %zu meshes): %.1f ms per frame without them (with them %.2fx, %.1f %% of the "
+                  "frame); surfaces %.1f ms without\n", frame.bodies.size(), frame.bodyMeshes.size(), median(denseTotal),
+                  out["bodies"]["ratio_frame"].get<double>(), 100 * out["bodies"]["share_of_frame"].get<double>(),
+                  median(denseSurfaces));
+    else if (dense)
       std::printf("  through a %d^3 density field with a hazer: %.1f ms per frame (%.2fx), %.0f ms CPU (%.2fx), planes "
                   "%.1f ms (%.2fx), surfaces %.1f ms; cold %.1f ms\n", densityCells, median(denseTotal),
                   out["density"]["ratio_frame"].get<double>(), median(denseCpu), out["density"]["ratio_cpu"].get<double>(),

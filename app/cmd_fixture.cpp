@@ -44,6 +44,12 @@ void printText(const nlohmann::ordered_json& f) {
                 << size[1].get<double>() << " x " << size[2].get<double>() << " m";
     }
     std::cout << "\n";
+    for (const auto& m : b["models"]) {
+      const auto& size = m["size"];
+      std::cout << "    " << m["part"].get<std::string>() << " model " << m["file"].get<std::string>() << ": "
+                << m["triangles"].get<std::size_t>() << " triangles, " << size[0].get<double>() << " x "
+                << size[1].get<double>() << " x " << size[2].get<double>() << " m\n";
+    }
   }
   for (auto [key, what] : {std::pair{"gobo_wheels", "gobo wheel"}, std::pair{"color_wheels", "colour wheel"}})
     for (size_t w = 0; w < f[key].size(); ++w) {

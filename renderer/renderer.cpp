@@ -205,11 +205,12 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   m.venue.bind();
   m.venue.drawAll();
-  m.bodies.update(frame.bodies);
+  m.bodies.update(frame.bodies, frame.bodyMeshes);
   if (!m.bodies.empty()) {
     m.bodies.bind();
     m.bodies.drawAll();
   }
+  m.bodies.drawMeshes(m.shadowProgram.id(), -1);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
@@ -255,6 +256,13 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
       glProgramUniform4fv(prog, HAZE_LOC_SURFACE_BASE_COLOR, 1, glm::value_ptr(albedo));
       m.bodies.draw(d);
     }
+  }
+  if (m.bodies.hasMeshes()) {
+    const glm::vec3 none(0.0f);
+    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, 0);
+    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, 0);
+    glProgramUniform3fv(prog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(none));
+    m.bodies.drawMeshes(prog, HAZE_LOC_SURFACE_BASE_COLOR);
   }
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);

@@ -47,6 +47,7 @@
 
 // venue.vert.glsl (shadow maps, depth pre-pass, surfaces)
 #define HAZE_LOC_VIEW_PROJ 0
+#define HAZE_LOC_MODEL 12   // mat4 (12..15): a body mesh's placement; identity (its default) for the venue
 
 // surface.frag.glsl (with venue.vert.glsl)
 #define HAZE_LOC_SURFACE_EYE 1

@@ -41,6 +41,7 @@ for p in "${parsers[@]}"; do
   log=$build/fuzz-$p.log
   # The seed folder is read-only input: libFuzzer writes only into the first folder.
   if ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
+     LSAN_OPTIONS=suppressions="$root/tests/fuzz/lsan.supp" \
      "$build/tests/fuzz_$p" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
        -print_final_stats=1 -artifact_prefix="$artifacts/" "${dict[@]}" \
        "$work" "$root/tests/fuzz/corpus/$p" >"$log" 2>&1; then

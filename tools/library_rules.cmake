@@ -1,7 +1,7 @@
 # The design's rule, checked at configure time: the pure-data libraries never reach GL, EGL,
 # GLFW or ImGui, however indirectly, and only the GUI reaches GLFW and ImGui. A link added
 # against the rule fails the configure step with the path that breaks it.
-set(HAZE_PURE_LIBRARIES haze_core haze_atmosphere haze_fixtures haze_scene haze_reference haze_shows haze_dmx haze_edit
+set(HAZE_PURE_LIBRARIES haze_core haze_mesh haze_atmosphere haze_fixtures haze_scene haze_reference haze_shows haze_dmx haze_edit
     haze_import haze_output)
 set(HAZE_GL_ONLY PkgConfig::EGL PkgConfig::OPENGL haze_gl haze_renderer haze_shaders haze_app)
 set(HAZE_GUI_ONLY glfw PkgConfig::IMGUI haze_gui)

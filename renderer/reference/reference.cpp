@@ -11,6 +11,9 @@
 #include <atomic>
 #include <cassert>
 #include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <thread>
 
 #include <glm/geometric.hpp>
@@ -226,16 +229,67 @@ glm::vec3 surfaceRadiance(const Bvh& bvh, const FrameState& frame,
                       venue.albedo(*s.primitive, s.uv), venue.emission(*s.primitive, s.uv), v, o);
 }
 
-// The nearest fixture body on the ray before tMax (docs/rendering.md, "Fixture bodies").
-struct BodyHit {
-  const BodyBox* box = nullptr;
-  BoxHit hit;
+// A body mesh's own BVH, in its part's frame (docs/rendering.md, "Fixture bodies"): built once
+// per distinct mesh and kept while the mesh lives, so every frame of a move reuses it.
+struct MeshAccel {
+  Venue venue;
+  std::unique_ptr<Bvh> bvh;
 };
-BodyHit closestBody(const FrameState& frame, const glm::vec3& e, const glm::vec3& v, float tMax) {
+
+std::shared_ptr<const MeshAccel> meshAccel(const std::shared_ptr<const TriangleMesh>& mesh) {
+  static std::mutex lock;
+  static std::map<const TriangleMesh*, std::pair<std::weak_ptr<const TriangleMesh>, std::shared_ptr<const MeshAccel>>> cache;
+  const std::lock_guard<std::mutex> guard(lock);
+  for (auto it = cache.begin(); it != cache.end();)
+    it = it->second.first.expired() ? cache.erase(it) : std::next(it);
+  auto& slot = cache[mesh.get()];
+  if (!slot.second) {
+    auto accel = std::make_shared<MeshAccel>();
+    Primitive p;
+    p.name = "body mesh";
+    p.positions = mesh->positions;
+    p.normals = mesh->normals;
+    p.indices = mesh->indices;
+    accel->venue.primitives.push_back(std::move(p));
+    accel->venue.materials.emplace_back();
+    accel->bvh = std::make_unique<Bvh>(accel->venue);
+    slot = {mesh, std::move(accel)};
+  }
+  return slot.second;
+}
+
+// The accelerations of a frame's posed meshes, by index into FrameState::bodyMeshes.
+std::vector<std::shared_ptr<const MeshAccel>> bodyMeshAccels(const FrameState& frame) {
+  std::vector<std::shared_ptr<const MeshAccel>> out;
+  out.reserve(frame.bodyMeshes.size());
+  for (const BodyMesh& m : frame.bodyMeshes) out.push_back(m.mesh ? meshAccel(m.mesh) : nullptr);
+  return out;
+}
+
+// The nearest fixture body on the ray before tMax (docs/rendering.md, "Fixture bodies"): the
+// boxes exactly, the meshes through their BVHs with the ray taken into the part's frame.
+struct BodyHit {
+  bool hit = false;
+  float tM = 0.0f;
+  glm::vec3 geometricNormal{0.0f};
+  glm::vec3 shadingNormal{0.0f};
+  glm::vec3 albedo{0.0f};
+};
+BodyHit closestBody(const FrameState& frame, const std::vector<std::shared_ptr<const MeshAccel>>& accels,
+                    const glm::vec3& e, const glm::vec3& v, float tMax) {
   BodyHit best;
   for (const BodyBox& b : frame.bodies) {
-    const BoxHit h = intersectBox(b, e, v, best.box ? best.hit.tM : tMax);
-    if (h.hit) best = {&b, h};
+    const BoxHit h = intersectBox(b, e, v, best.hit ? best.tM : tMax);
+    if (h.hit) best = {true, h.tM, h.normal, h.normal, b.albedo};
+  }
+  for (size_t k = 0; k < frame.bodyMeshes.size() && k < accels.size(); ++k) {
+    if (!accels[k]) continue;
+    const BodyMesh& m = frame.bodyMeshes[k];
+    const glm::mat3 toLocal = glm::transpose(m.axes);
+    const RayHit h = accels[k]->bvh->closestHit(toLocal * (e - m.originM), toLocal * v, 0.0f, best.hit ? best.tM : tMax);
+    if (!h.hit()) continue;
+    const SurfacePoint sp = accels[k]->bvh->surfaceAt(h);
+    best = {true, h.tM, m.axes * sp.geometricNormal, m.axes * sp.shadingNormal, m.albedo};
   }
   return best;
 }
@@ -281,17 +335,18 @@ glm::vec3 lensLuminance(const BeamState& beam, const glm::vec3& eye) {
 namespace {
 
 PixelRadiance radiance(const Bvh& bvh, const FrameState& frame,
-                       const std::vector<ActiveBeam>& beams, const glm::vec3& e,
+                       const std::vector<ActiveBeam>& beams,
+                       const std::vector<std::shared_ptr<const MeshAccel>>& accels, const glm::vec3& e,
                        const glm::vec3& v, const ReferenceOptions& o) {
   PixelRadiance out;
   const float far = frame.camera.farM > 0.0f ? frame.camera.farM : 100.0f;
   const RayHit hit = bvh.closestHit(e, v, 0.0f, far);
   out.hitSurface = hit.hit();
   out.depthM = out.hitSurface ? hit.tM : far;
-  const BodyHit body = closestBody(frame, e, v, out.depthM);
-  if (body.box) {
+  const BodyHit body = closestBody(frame, accels, e, v, out.depthM);
+  if (body.hit) {
     out.hitSurface = true;
-    out.depthM = body.hit.tM;
+    out.depthM = body.tM;
   }
   const LensHit lens = closestLens(frame, e, v, out.depthM);
   if (lens.beam) {
@@ -302,9 +357,9 @@ PixelRadiance radiance(const Bvh& bvh, const FrameState& frame,
   const float transmit = std::exp(-frame.medium.extinction() * densityLength(frame.medium, e, e + v * out.depthM));
   if (out.hitLens) {
     out.surface = lensLuminance(*lens.beam, e) * transmit;
-  } else if (body.box) {
-    out.surface = shadeSurface(bvh, frame, beams, e + v * body.hit.tM, body.hit.normal, body.hit.normal,
-                               body.box->albedo, glm::vec3(0.0f), v, o) *
+  } else if (body.hit) {
+    out.surface = shadeSurface(bvh, frame, beams, e + v * body.tM, body.geometricNormal, body.shadingNormal,
+                               body.albedo, glm::vec3(0.0f), v, o) *
                   transmit;
   } else if (out.hitSurface) {
     out.surface = surfaceRadiance(bvh, frame, beams, hit, v, o) * transmit;
@@ -330,7 +385,7 @@ glm::vec3 cameraRayDirection(const CameraState& camera, int width, int height, f
 
 PixelRadiance radianceAlongRay(const Bvh& bvh, const FrameState& frame, const glm::vec3& origin,
                                const glm::vec3& dir, const ReferenceOptions& options) {
-  return radiance(bvh, frame, activeBeams(frame), origin, dir, options);
+  return radiance(bvh, frame, activeBeams(frame), bodyMeshAccels(frame), origin, dir, options);
 }
 
 PixelRadiance radianceAtPixel(const Bvh& bvh, const FrameState& frame, int width, int height,
@@ -351,6 +406,7 @@ ReferenceImages renderReferenceImages(const Bvh& bvh, const FrameState& frame, i
   }
   out.depthM.assign(count, 0.0f);
   const std::vector<ActiveBeam> beams = activeBeams(frame);
+  const auto accels = bodyMeshAccels(frame);
 
   std::atomic<int> nextRow{0}, rowsDone{0};
   const std::thread::id caller = std::this_thread::get_id();
@@ -358,7 +414,7 @@ ReferenceImages renderReferenceImages(const Bvh& bvh, const FrameState& frame, i
     for (int j = nextRow++; j < height; j = nextRow++) {
       for (int i = 0; i < width; ++i) {
         const glm::vec3 dir = cameraRayDirection(frame.camera, width, height, i + 0.5f, j + 0.5f);
-        const PixelRadiance px = radiance(bvh, frame, beams, frame.camera.position, dir, options);
+        const PixelRadiance px = radiance(bvh, frame, beams, accels, frame.camera.position, dir, options);
         const size_t at = static_cast<size_t>(j) * width + i;
         out.total.pixels[at] = px.total();
         out.surface.pixels[at] = px.surface + px.background;

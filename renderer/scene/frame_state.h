@@ -63,6 +63,8 @@ struct FrameState {
   // The fixtures' housings (docs/rendering.md, "Fixture bodies"): seen by the camera and lit by
   // the beams, but casting no shadow (shadow maps are cached per beam; bodies move with pan).
   std::vector<BodyBox> bodies;
+  // The parts that have a model of their own (a GDTF's mesh): its triangles, placed.
+  std::vector<BodyMesh> bodyMeshes;
 };
 
 }  // namespace haze

@@ -9,13 +9,11 @@
 #include <map>
 #include <memory>
 
-#include <assimp/Importer.hpp>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
 #include "fixtures/core/zip_archive.h"
+#include "fixtures/mesh/mesh.h"
 #include "shows/show_save.h"
 
 namespace haze {
@@ -26,65 +24,24 @@ namespace {
 // stored mesh 200000 times, which must not become gigabytes.
 constexpr std::size_t kMaxPlacedTriangles = 2'000'000;
 
-struct MeshData {
-  std::vector<float> positions;  // xyz
-  std::vector<float> normals;    // xyz
-  std::vector<std::uint32_t> indices;
-  bool yUpMetres = false;        // .glb: glTF's own frame
-};
+std::string lowerExt(const std::string& name) { return meshExtension(name); }
 
-std::string lowerExt(const std::string& name) {
-  const auto dot = name.rfind('.');
-  std::string e = dot == std::string::npos ? "" : name.substr(dot + 1);
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
-
-// One file through assimp, node transforms baked in; an error sentence when it gives nothing.
-std::string loadMesh(const ZipArchive& archive, const std::string& name, std::size_t budgetTriangles, MeshData& out) {
-  const std::string ext = lowerExt(name);
-  if (ext != "3ds" && ext != "glb" && ext != "gltf")
-    return "geometry file \"" + name + "\" is neither .3ds nor .glb; left out";
+// One file through the shared mesh loader (fixtures/mesh), node transforms baked in; an error
+// sentence when it gives nothing.
+std::string readGeometryFile(const ZipArchive& archive, const std::string& name, std::size_t budgetTriangles, TriangleMesh& out) {
+  if (!isMeshFile(name)) return "geometry file \"" + name + "\" is neither .3ds nor .glb; left out";
   auto bytes = archive.read(name);
   if (!bytes.ok()) return "geometry file \"" + name + "\" cannot be read (" + bytes.error().message + "); left out";
-  try {
-    Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFileFromMemory(
-        bytes->data(), bytes->size(),
-        aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenNormals | aiProcess_SortByPType,
-        ext.c_str());
-    if (scene == nullptr || scene->mNumMeshes == 0)
-      return "geometry file \"" + name + "\" could not be read by assimp (" + importer.GetErrorString() + "); left out";
-    out.yUpMetres = ext != "3ds";
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-      const aiMesh* mesh = scene->mMeshes[m];
-      if ((mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0 || mesh->mVertices == nullptr) continue;
-      if (out.indices.size() / 3 + mesh->mNumFaces > budgetTriangles)
-        return "geometry file \"" + name + "\" would pass the venue's triangle limit; left out";
-      const auto base = static_cast<std::uint32_t>(out.positions.size() / 3);
-      for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-        const aiVector3D& p = mesh->mVertices[v];
-        out.positions.insert(out.positions.end(), {p.x, p.y, p.z});
-        aiVector3D n = mesh->mNormals != nullptr ? mesh->mNormals[v] : aiVector3D(0, 0, 1);
-        const float len = n.Length();
-        if (!(len > 0.0f) || !std::isfinite(len)) n = aiVector3D(0, 0, 1); else n /= len;
-        out.normals.insert(out.normals.end(), {n.x, n.y, n.z});
-      }
-      for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-        const aiFace& face = mesh->mFaces[f];
-        if (face.mNumIndices != 3) continue;
-        bool inRange = true;
-        for (int k = 0; k < 3; ++k) inRange &= face.mIndices[k] < mesh->mNumVertices;
-        if (!inRange) continue;
-        for (int k = 0; k < 3; ++k) out.indices.push_back(base + face.mIndices[k]);
-      }
-    }
-    for (float f : out.positions)
-      if (!std::isfinite(f)) return "geometry file \"" + name + "\" has non-finite vertices; left out";
-    if (out.indices.empty()) return "geometry file \"" + name + "\" has no triangles; left out";
-  } catch (const std::exception& e) {
-    return "geometry file \"" + name + "\" made assimp fail (" + e.what() + "); left out";
+  MeshLimits limits;
+  limits.maxTriangles = budgetTriangles;
+  limits.maxFileBytes = std::size_t{1} << 30;  // the archive reader has its own limits
+  auto mesh = loadMesh(bytes->data(), bytes->size(), name, limits);
+  if (!mesh.ok()) {
+    if (mesh.error().message.starts_with("has more than") && mesh.error().message.ends_with("triangles"))
+      return "geometry file \"" + name + "\" would pass the venue's triangle limit; left out";
+    return "geometry file \"" + name + "\" " + mesh.error().message + "; left out";
   }
+  out = std::move(*mesh);
   return "";
 }
 
@@ -117,7 +74,7 @@ Result<MvrVenueStats> writeMvrVenue(const ZipArchive& archive, const std::vector
 
   MvrVenueStats stats;
   std::map<std::string, int> meshIndex;  // file -> glTF mesh, -1 when it failed
-  std::vector<MeshData> loaded;          // by glTF mesh, for the placed triangles
+  std::vector<TriangleMesh> loaded;          // by glTF mesh, for the placed triangles
   std::string bin;
   nlohmann::json accessors = nlohmann::json::array(), views = nlohmann::json::array(),
                  meshes = nlohmann::json::array(), nodes = nlohmann::json::array();
@@ -131,22 +88,17 @@ Result<MvrVenueStats> writeMvrVenue(const ZipArchive& archive, const std::vector
   for (const MvrGeometryInstance& inst : instances) {
     auto it = meshIndex.find(inst.fileName);
     if (it == meshIndex.end()) {
-      MeshData mesh;
-      const std::string problem = loadMesh(archive, inst.fileName, maxTriangles - stored, mesh);
+      TriangleMesh mesh;
+      const std::string problem = readGeometryFile(archive, inst.fileName, maxTriangles - stored, mesh);
       if (!problem.empty()) {
         warnings.push_back(inst.place + ": " + problem);
         it = meshIndex.emplace(inst.fileName, -1).first;
       } else {
         stored += mesh.indices.size() / 3;
-        glm::vec3 lo(1e30f), hi(-1e30f);
-        for (std::size_t i = 0; i < mesh.positions.size(); i += 3)
-          for (int k = 0; k < 3; ++k) {
-            lo[k] = std::min(lo[k], mesh.positions[i + static_cast<std::size_t>(k)]);
-            hi[k] = std::max(hi[k], mesh.positions[i + static_cast<std::size_t>(k)]);
-          }
-        const std::size_t nVerts = mesh.positions.size() / 3;
-        const int pv = addView(mesh.positions.data(), mesh.positions.size() * sizeof(float), 34962);
-        const int nv = addView(mesh.normals.data(), mesh.normals.size() * sizeof(float), 34962);
+        const glm::vec3 lo = mesh.boundsMin, hi = mesh.boundsMax;
+        const std::size_t nVerts = mesh.positions.size();
+        const int pv = addView(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3), 34962);
+        const int nv = addView(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3), 34962);
         const int iv = addView(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t), 34963);
         accessors.push_back({{"bufferView", pv}, {"componentType", 5126}, {"count", nVerts}, {"type", "VEC3"},
                              {"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}});
@@ -158,7 +110,7 @@ Result<MvrVenueStats> writeMvrVenue(const ZipArchive& archive, const std::vector
                                            {"indices", a0 + 2}, {"material", 0}, {"mode", 4}}}}});
         it = meshIndex.emplace(inst.fileName, static_cast<int>(meshes.size() - 1)).first;
         ++stats.meshes;
-        if (mesh.yUpMetres) meshes.back()["extras"] = {{"mvr_units", "m, Y-up"}};
+        if (lowerExt(inst.fileName) != "3ds") meshes.back()["extras"] = {{"mvr_units", "m, Y-up"}};
         else meshes.back()["extras"] = {{"mvr_units", "mm, Y-up (assimp turned the .3ds Z-up)"}};
         stats.triangles += mesh.indices.size() / 3;
         mesh.normals.clear();
@@ -173,11 +125,11 @@ Result<MvrVenueStats> writeMvrVenue(const ZipArchive& archive, const std::vector
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) matrix.push_back(static_cast<double>(static_cast<float>(m[c][r])));
     nodes.push_back({{"name", inst.place}, {"mesh", it->second}, {"matrix", matrix}});
-    const MeshData& placed = loaded[static_cast<std::size_t>(it->second)];
+    const TriangleMesh& placed = loaded[static_cast<std::size_t>(it->second)];
     if (stats.placedTrianglesM.size() + placed.indices.size() <= 3 * kMaxPlacedTriangles) {
       for (std::uint32_t index : placed.indices) {
-        const float* p = &placed.positions[3 * static_cast<std::size_t>(index)];
-        stats.placedTrianglesM.push_back(glm::vec3(m * glm::dvec4(p[0], p[1], p[2], 1.0)));
+        const glm::vec3& p = placed.positions[index];
+        stats.placedTrianglesM.push_back(glm::vec3(m * glm::dvec4(p.x, p.y, p.z, 1.0)));
       }
     } else if (!stats.placedTrianglesCut) {
       stats.placedTrianglesCut = true;

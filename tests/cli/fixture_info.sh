@@ -83,6 +83,38 @@ check "$data/gdtf/BlenderDMX@BeskydBeam@version10.gdtf" "$keys" \
 grep -q "^  body (gdtf): base 0.3 x 0.13 x 0.3 m yoke arm .* head 0.224 x 0.244 x 0.186 m$" "$tmp/out.txt" ||
   fail "the text form does not show the body: $(grep body "$tmp/out.txt")"
 
+# Body models (docs/fixtures.md, "Bodies"): the BMFL's three .3ds files and the PAR's .glb are
+# listed with their triangles and sizes (each fitted to its GDTF Model's dimensions).
+check "$data/gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf" \
+  "f.body.models.length === 3" \
+  "f.body.models.map(m => m.part + ':' + m.file).join(',') === 'base:models/3ds/base.3ds,yoke:models/3ds/yoke.3ds,head:models/3ds/head.3ds'" \
+  "f.body.models.every(m => m.triangles > 10)" \
+  "JSON.stringify(f.body.models[2].size) === '[0.34,0.613,0.23]'"
+check "$data/gdtf/BlenderDMX@LED_PAR_64_RGBW@v0.3.gdtf" \
+  "f.body.models.length === 1 && f.body.models[0].file === 'models/gltf/Body.glb' && f.body.models[0].part === 'head'"
+check "$data/gdtf/BlenderDMX@BeskydBeam@version10.gdtf" "f.body.models.length === 0"
+"$haze" fixture info "$data/gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf" > "$tmp/out.txt" 2>&1 ||
+  fail "fixture info (text) failed on the BMFL"
+grep -q "^    head model models/3ds/head.3ds: [0-9]* triangles, 0.34 x 0.613 x 0.23 m$" "$tmp/out.txt" ||
+  fail "the text form does not list the body models: $(grep model "$tmp/out.txt")"
+
+# Bad input: a BMFL whose head.3ds is missing and whose yoke.3ds is broken imports, with a
+# warning naming each file; those parts are boxes (the Model's size), the base keeps its mesh.
+python3 - "$data/gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf" "$tmp/bmfl_broken.gdtf" <<'PY'
+import sys, zipfile
+src = zipfile.ZipFile(sys.argv[1])
+with zipfile.ZipFile(sys.argv[2], 'w', zipfile.ZIP_DEFLATED) as out:
+    for name in src.namelist():
+        if name == 'models/3ds/head.3ds':
+            continue
+        out.writestr(name, b'not a 3ds file' if name == 'models/3ds/yoke.3ds' else src.read(name))
+PY
+check "$tmp/bmfl_broken.gdtf" \
+  "f.body.models.length === 1 && f.body.models[0].file === 'models/3ds/base.3ds'" \
+  "f.warnings.some(w => w.includes(\"model file 'head'\") && w.includes('models/3ds/head.3ds'))" \
+  "f.warnings.some(w => w.includes('models/3ds/yoke.3ds'))" \
+  "JSON.stringify(f.body.head.size) === '[0.34,0.613,0.23]' && f.body.yoke_left !== null && f.body.yoke_right !== null"
+
 # A native lens_radius wins over the default.
 sed 's/"zoom"/"lens_radius": 0.07, "zoom"/' "$tmp/par.json" > "$tmp/par_lens.json"
 check "$tmp/par_lens.json" "f.lens_radius === 0.07 && f.lens_radius_source === 'profile'"

@@ -34,6 +34,7 @@ bool acceptSacnExtended(const uint8_t* data, size_t size);
 bool acceptArtTimeCode(const uint8_t* data, size_t size);
 bool acceptOsc(const uint8_t* data, size_t size);
 bool acceptMidiTimecode(const uint8_t* data, size_t size);
+bool acceptMesh(const uint8_t* data, size_t size);  // .3ds / .glb / .gltf by the first bytes
 
 }  // namespace haze::fuzz
 

@@ -3,7 +3,8 @@
 // its own beam on. Over the body's pixels (the reference's rays that end on a body box, away
 // from its silhouette) the GPU's radiance must match the reference's; the head hides the venue
 // behind it, the lens still glows in front of the head, and a frame without bodies shows the
-// floor there instead.
+// floor there instead. The same for a GDTF body's meshes (the BMFL's .3ds models), and a head
+// drawn at two tilts has moved its silhouette.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/render_session.h"
+#include "fixtures/gdtf.h"
 #include "fixtures/pose.h"
 #include "render_test_util.h"
 #include "renderer/reference/reference.h"
@@ -144,6 +146,134 @@ TEST_F(BodyVsReference, WithoutBodiesTheFloorShowsThere) {
   // Elsewhere the beams' in-scattering is the same; draft quality's noise is frame to frame
   // deterministic (one jittered frame, the same seed), so nothing away from the body moves.
   EXPECT_EQ(changedElsewhere, 0);
+}
+
+// ---- GDTF meshes: the BMFL's base, yoke and head models ----
+
+const Body& bmflBody() {
+  static const Body body = [] {
+    auto g = loadGdtf(std::string(HAZE_SHARED_DATA) +
+                      "/gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+    EXPECT_TRUE(g.ok()) << (g.ok() ? "" : g.error().str());
+    return g.ok() ? g->profile->housing() : Body{};
+  }();
+  return body;
+}
+
+FrameState meshFrame(float tiltDeg) {
+  FrameState f = bodyFrame();
+  f.bodies.clear();
+  const glm::vec3 pivot(0.0f, 4.0f, 0.0f), rotation(0.0f);
+  f.beams[0].pose = beamPose(pivot, rotation, 30.0f, tiltDeg, glm::vec3(0.0f, -0.33f, 0.0f));
+  f.camera.position = pivot + glm::vec3(2.2f, -0.5f, 1.8f);
+  f.camera.target = pivot + glm::vec3(0.0f, 0.1f, 0.0f);
+  poseBody(bmflBody(), pivot, rotation, 30.0f, tiltDeg, f.bodies, &f.bodyMeshes);
+  return f;
+}
+
+// The posed meshes' triangles in world space, one primitive per part, for the test's own rays.
+Venue meshVenue(const FrameState& f) {
+  Venue v;
+  v.materials.emplace_back();
+  for (const BodyMesh& m : f.bodyMeshes) {
+    Primitive p;
+    for (const glm::vec3& q : m.mesh->positions) p.positions.push_back(m.originM + m.axes * q);
+    for (const glm::vec3& n : m.mesh->normals) p.normals.push_back(m.axes * n);
+    p.indices = m.mesh->indices;
+    v.primitives.push_back(std::move(p));
+  }
+  return v;
+}
+
+TEST_F(BodyVsReference, GdtfMeshPixelsMatchTheReference) {
+  ASSERT_TRUE(bmflBody().head.mesh);
+  const Venue venue = floorVenue(16.0f, 0.3f);
+  const FrameState f = meshFrame(40.0f);
+  ASSERT_EQ(f.bodyMeshes.size(), 3u);
+  const Venue parts = meshVenue(f);
+  const Bvh partsBvh(parts);
+  // A pixel away from silhouettes and creases: its centre and corners end on one part, on faces
+  // that all face the same way.
+  auto interiorPart = [&](int x, int y) {
+    const glm::vec3 e = f.camera.position;
+    const RayHit c = partsBvh.closestHit(e, cameraRayDirection(f.camera, kW, kH, x + 0.5f, y + 0.5f), 0.0f, 100.0f);
+    if (!c.hit()) return -1;
+    const glm::vec3 n = partsBvh.surfaceAt(c).geometricNormal;
+    for (float dx : {0.0f, 1.0f})
+      for (float dy : {0.0f, 1.0f}) {
+        const RayHit h = partsBvh.closestHit(e, cameraRayDirection(f.camera, kW, kH, x + dx, y + dy), 0.0f, 100.0f);
+        if (!h.hit() || h.primitive != c.primitive) return -1;
+        if (std::fabs(glm::dot(partsBvh.surfaceAt(h).geometricNormal, n)) < 0.98f) return -1;
+      }
+    return c.primitive;
+  };
+  const Bvh bvh(venue);
+  const ReferenceImages ref = renderReferenceImages(bvh, f, kW, kH);
+  const ImageRGB img = gpu(venue, f, Quality::High);
+  ASSERT_EQ(img.width, kW);
+  int interior = 0, failed = 0, lit = 0;
+  double worst = 0.0, sumRel = 0.0, sumRelAgreeing = 0.0;
+  for (int y = 1; y < kH - 1; ++y)
+    for (int x = 1; x < kW - 1; ++x) {
+      const int part = interiorPart(x, y);
+      if (part < 0) continue;
+      const PixelRadiance px = radianceAtPixel(bvh, f, kW, kH, x, y);
+      if (px.hitLens) continue;
+      ++interior;
+      const double want = ref.total.at(x, y).r, got = img.at(x, y).r;
+      if (ref.surface.at(x, y).r > 0.5) ++lit;
+      const double rel = std::abs(got - want) / std::max(want, 1e-6);
+      worst = std::max(worst, rel);
+      sumRel += rel;
+      if (rel <= 0.05) sumRelAgreeing += rel;
+      if (rel > 0.05 && ++failed <= 8)
+        std::printf("  pixel (%d, %d) on part %d: %.5g, reference %.5g (%.1f %%)\n", x, y, part, got, want, 100 * rel);
+    }
+  if (failed > interior / 20) writeDiagnostics("body_mesh", img, ref.total);
+  const double meanAgreeing = sumRelAgreeing / std::max(interior - failed, 1);
+  std::printf("[ mesh ] %d body pixels (%d lit by the wash): mean %.2f %%, worst %.2f %%; %d off by more than 5 %%, "
+              "the others' mean %.2f %%\n", interior, lit, 100 * sumRel / std::max(interior, 1), 100 * worst, failed,
+              100 * meanAgreeing);
+  EXPECT_GT(interior, 300) << "the BMFL should fill a good part of the image";
+  EXPECT_GT(lit, 100) << "the wash should light the faces the camera sees";
+  // Measured: 74 of 2087 pixels (3.5 %) off by more than 5 %, in clusters on the top of the base
+  // where the model's faces meet at creases the test's four-corner check does not see (not
+  // understood further); the other pixels' mean 0.38 %. Limits: 5 % of the pixels, and a mean
+  // of 0.6 % over the others.
+  EXPECT_LE(failed, interior / 20) << failed << " of " << interior << " mesh pixels off by more than 5 %";
+  EXPECT_LT(meanAgreeing, 0.006);
+}
+
+TEST_F(BodyVsReference, AMeshHeadTurnsWithTilt) {
+  ASSERT_TRUE(bmflBody().head.mesh);
+  const Venue venue = floorVenue(16.0f, 0.3f);
+  // The head's silhouette: where a frame with the head's mesh differs from one without (the base
+  // and yoke, which do not tilt, left out).
+  auto silhouette = [&](float tilt) {
+    FrameState with = meshFrame(tilt), without = with;
+    with.bodyMeshes.erase(with.bodyMeshes.begin(), with.bodyMeshes.end() - 1);
+    without.bodies.clear();
+    without.bodyMeshes.clear();
+    const ImageRGB a = gpu(venue, with, Quality::Draft), b = gpu(venue, without, Quality::Draft);
+    std::vector<bool> mask(static_cast<size_t>(kW) * kH, false);
+    if (a.width != kW || b.width != kW) return mask;
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x)
+        mask[static_cast<size_t>(y) * kW + x] =
+            glm::length(a.at(x, y) - b.at(x, y)) / std::max(glm::length(b.at(x, y)), 1e-3f) > 0.05f;
+    return mask;
+  };
+  const std::vector<bool> s0 = silhouette(0.0f), s1 = silhouette(70.0f);
+  int area0 = 0, area1 = 0, moved = 0;
+  for (size_t i = 0; i < s0.size(); ++i) {
+    area0 += s0[i];
+    area1 += s1[i];
+    moved += s0[i] != s1[i];
+  }
+  std::printf("silhouette at tilt 0: %d pixels, at tilt 70: %d, changed %d\n", area0, area1, moved);
+  EXPECT_GT(area0, 300);
+  EXPECT_GT(area1, 300);
+  EXPECT_GT(moved, std::min(area0, area1) / 2) << "the head should have swung to another place in the image";
 }
 
 }  // namespace

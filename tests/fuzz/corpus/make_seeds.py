@@ -299,3 +299,24 @@ put('midi_timecode', 'ok-backward.bin', b''.join(mtc_forward[i:i + 2] for i in r
 put('midi_timecode', 'ok-full-frame.bin', bytes([0xF0, 0x7F, 0x7F, 0x01, 0x01, 0x21, 0x02, 0x03, 0x04, 0xF7]))
 put('midi_timecode', 'bad-missing-piece.bin', mtc_forward[:4] + mtc_forward[6:])
 put('midi_timecode', 'bad-minutes-60.bin', bytes([0xF0, 0x7F, 0x7F, 0x01, 0x01, 0x21, 0x3C, 0x03, 0x04, 0xF7]))
+
+# ---- mesh (fixtures/mesh: GDTF body models, MVR geometry) ----
+def chunk(cid, payload):
+    return struct.pack('<HI', cid, 6 + len(payload)) + payload
+def tds(vertices, faces, name=b'box'):
+    verts = struct.pack('<H', len(vertices)) + b''.join(struct.pack('<fff', *v) for v in vertices)
+    tris = struct.pack('<H', len(faces)) + b''.join(struct.pack('<HHHH', a, b, c, 0) for a, b, c in faces)
+    mesh = chunk(0x4100, chunk(0x4110, verts) + chunk(0x4120, tris))
+    obj = chunk(0x4000, name + b'\0' + mesh)
+    return chunk(0x4D4D, chunk(0x0002, struct.pack('<I', 3)) + chunk(0x3D3D, obj))
+cube_v = [(x, y, z) for x in (-50.0, 50.0) for y in (-50.0, 50.0) for z in (0.0, 100.0)]
+cube_f = [(0, 1, 3), (0, 3, 2), (4, 6, 7), (4, 7, 5), (0, 4, 5), (0, 5, 1),
+          (2, 3, 7), (2, 7, 6), (0, 2, 6), (0, 6, 4), (1, 5, 7), (1, 7, 3)]
+put('mesh', 'ok-cube.3ds', tds(cube_v, cube_f))
+put('mesh', 'ok-triangle.glb', glb(doc, buf))
+put('mesh', 'bad-no-faces.3ds', tds(cube_v, []))
+put('mesh', 'bad-truncated.3ds', tds(cube_v, cube_f)[:40])
+# A JSON chunk that declares 2.9 GB (found by the fuzzer: assimp allocated it before reading).
+huge_chunk = bytearray(glb(doc, buf))
+huge_chunk[12:16] = struct.pack('<I', 0xae000310)
+put('mesh', 'bad-glb-chunk-length.glb', bytes(huge_chunk))

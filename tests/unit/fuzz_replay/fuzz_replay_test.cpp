@@ -139,6 +139,7 @@ TEST(FuzzReplay, SacnExtended) { replay("sacn_extended", fuzz::acceptSacnExtende
 TEST(FuzzReplay, ArtTimeCode) { replay("artnet_timecode", fuzz::acceptArtTimeCode, 3000, 12); }
 TEST(FuzzReplay, Osc) { replay("osc", fuzz::acceptOsc, 5000, 13); }
 TEST(FuzzReplay, MidiTimecode) { replay("midi_timecode", fuzz::acceptMidiTimecode, 5000, 14); }
+TEST(FuzzReplay, Mesh) { replay("mesh", fuzz::acceptMesh, 500, 15); }
 
 }  // namespace
 }  // namespace haze
