@@ -11,14 +11,13 @@
 #include <atomic>
 #include <cassert>
 #include <cmath>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <thread>
 
 #include <glm/geometric.hpp>
 
 #include "renderer/reference/cone.h"
+#include "renderer/scene/body_hit.h"
 #include "renderer/scene/camera_basis.h"
 #include "renderer/scene/physics.h"
 
@@ -229,71 +228,6 @@ glm::vec3 surfaceRadiance(const Bvh& bvh, const FrameState& frame,
                       venue.albedo(*s.primitive, s.uv), venue.emission(*s.primitive, s.uv), v, o);
 }
 
-// A body mesh's own BVH, in its part's frame (docs/rendering.md, "Fixture bodies"): built once
-// per distinct mesh and kept while the mesh lives, so every frame of a move reuses it.
-struct MeshAccel {
-  Venue venue;
-  std::unique_ptr<Bvh> bvh;
-};
-
-std::shared_ptr<const MeshAccel> meshAccel(const std::shared_ptr<const TriangleMesh>& mesh) {
-  static std::mutex lock;
-  static std::map<const TriangleMesh*, std::pair<std::weak_ptr<const TriangleMesh>, std::shared_ptr<const MeshAccel>>> cache;
-  const std::lock_guard<std::mutex> guard(lock);
-  for (auto it = cache.begin(); it != cache.end();)
-    it = it->second.first.expired() ? cache.erase(it) : std::next(it);
-  auto& slot = cache[mesh.get()];
-  if (!slot.second) {
-    auto accel = std::make_shared<MeshAccel>();
-    Primitive p;
-    p.name = "body mesh";
-    p.positions = mesh->positions;
-    p.normals = mesh->normals;
-    p.indices = mesh->indices;
-    accel->venue.primitives.push_back(std::move(p));
-    accel->venue.materials.emplace_back();
-    accel->bvh = std::make_unique<Bvh>(accel->venue);
-    slot = {mesh, std::move(accel)};
-  }
-  return slot.second;
-}
-
-// The accelerations of a frame's posed meshes, by index into FrameState::bodyMeshes.
-std::vector<std::shared_ptr<const MeshAccel>> bodyMeshAccels(const FrameState& frame) {
-  std::vector<std::shared_ptr<const MeshAccel>> out;
-  out.reserve(frame.bodyMeshes.size());
-  for (const BodyMesh& m : frame.bodyMeshes) out.push_back(m.mesh ? meshAccel(m.mesh) : nullptr);
-  return out;
-}
-
-// The nearest fixture body on the ray before tMax (docs/rendering.md, "Fixture bodies"): the
-// boxes exactly, the meshes through their BVHs with the ray taken into the part's frame.
-struct BodyHit {
-  bool hit = false;
-  float tM = 0.0f;
-  glm::vec3 geometricNormal{0.0f};
-  glm::vec3 shadingNormal{0.0f};
-  glm::vec3 albedo{0.0f};
-};
-BodyHit closestBody(const FrameState& frame, const std::vector<std::shared_ptr<const MeshAccel>>& accels,
-                    const glm::vec3& e, const glm::vec3& v, float tMax) {
-  BodyHit best;
-  for (const BodyBox& b : frame.bodies) {
-    const BoxHit h = intersectBox(b, e, v, best.hit ? best.tM : tMax);
-    if (h.hit) best = {true, h.tM, h.normal, h.normal, b.albedo};
-  }
-  for (size_t k = 0; k < frame.bodyMeshes.size() && k < accels.size(); ++k) {
-    if (!accels[k]) continue;
-    const BodyMesh& m = frame.bodyMeshes[k];
-    const glm::mat3 toLocal = glm::transpose(m.axes);
-    const RayHit h = accels[k]->bvh->closestHit(toLocal * (e - m.originM), toLocal * v, 0.0f, best.hit ? best.tM : tMax);
-    if (!h.hit()) continue;
-    const SurfacePoint sp = accels[k]->bvh->surfaceAt(h);
-    best = {true, h.tM, m.axes * sp.geometricNormal, m.axes * sp.shadingNormal, m.albedo};
-  }
-  return best;
-}
-
 struct LensHit {
   const BeamState* beam = nullptr;
   float tM = 0.0f;
@@ -343,7 +277,7 @@ PixelRadiance radiance(const Bvh& bvh, const FrameState& frame,
   const RayHit hit = bvh.closestHit(e, v, 0.0f, far);
   out.hitSurface = hit.hit();
   out.depthM = out.hitSurface ? hit.tM : far;
-  const BodyHit body = closestBody(frame, accels, e, v, out.depthM);
+  const BodyHit body = closestBody(frame.bodies, frame.bodyMeshes, accels, e, v, out.depthM);
   if (body.hit) {
     out.hitSurface = true;
     out.depthM = body.tM;
@@ -385,7 +319,7 @@ glm::vec3 cameraRayDirection(const CameraState& camera, int width, int height, f
 
 PixelRadiance radianceAlongRay(const Bvh& bvh, const FrameState& frame, const glm::vec3& origin,
                                const glm::vec3& dir, const ReferenceOptions& options) {
-  return radiance(bvh, frame, activeBeams(frame), bodyMeshAccels(frame), origin, dir, options);
+  return radiance(bvh, frame, activeBeams(frame), bodyMeshAccels(frame.bodyMeshes), origin, dir, options);
 }
 
 PixelRadiance radianceAtPixel(const Bvh& bvh, const FrameState& frame, int width, int height,
@@ -406,7 +340,7 @@ ReferenceImages renderReferenceImages(const Bvh& bvh, const FrameState& frame, i
   }
   out.depthM.assign(count, 0.0f);
   const std::vector<ActiveBeam> beams = activeBeams(frame);
-  const auto accels = bodyMeshAccels(frame);
+  const auto accels = bodyMeshAccels(frame.bodyMeshes);
 
   std::atomic<int> nextRow{0}, rowsDone{0};
   const std::thread::id caller = std::this_thread::get_id();
