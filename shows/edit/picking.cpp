@@ -10,7 +10,9 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "fixtures/body.h"
 #include "fixtures/pose.h"
+#include "renderer/scene/body_hit.h"
 #include "renderer/scene/camera_basis.h"
 
 namespace haze {
@@ -136,8 +138,40 @@ float distanceToSegmentPx(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
 
 }  // namespace
 
+std::optional<int> pickFixtureBody(const Show& show, const ProfileSet& profiles, const StageState& state,
+                                   const Ray& ray, float maxDistanceM, const Bvh* bvh) {
+  // What the pointer sees: the venue hides a body behind it.
+  float nearestM = maxDistanceM;
+  if (bvh) {
+    if (auto h = castVenue(*bvh, ray, maxDistanceM)) nearestM = h->distanceM;
+  }
+  std::optional<int> best;
+  std::vector<BodyBox> boxes;
+  std::vector<BodyMesh> meshes;
+  for (const FixtureDef& f : show.fixtures) {
+    const auto p = profiles.find(f.profile);
+    if (p == profiles.end() || !p->second) continue;
+    const auto st = state.find(f.id);
+    const Attributes a = st != state.end() ? st->second : Attributes{};
+    boxes.clear();
+    meshes.clear();
+    // Posed as the frame builder poses it for the renderer (app/frame_builder.cpp).
+    poseBody(p->second->housing(), f.position, f.rotationDeg, a.panDeg, a.tiltDeg, boxes, &meshes);
+    const BodyHit h = closestBody(boxes, meshes, bodyMeshAccels(meshes), ray.origin, ray.dir, nearestM);
+    if (h.hit && h.tM < nearestM) {
+      best = f.id;
+      nearestM = h.tM;
+    }
+  }
+  return best;
+}
+
 std::optional<int> pickFixture(const Show& show, const ProfileSet& profiles, const StageState& state,
                                const ViewCamera& view, glm::vec2 pixel, const Bvh* bvh, const PickOptions& options) {
+  // 1. The body under the pointer (see picking.h for the order).
+  if (auto body = pickFixtureBody(show, profiles, state, view.ray(pixel), view.camera().farM, bvh)) return body;
+
+  // 2. The mounting point nearest the pointer.
   std::optional<int> best;
   float bestPx = options.bodyRadiusPx, bestDepth = std::numeric_limits<float>::infinity();
   for (const FixtureDef& f : show.fixtures) {
@@ -155,6 +189,7 @@ std::optional<int> pickFixture(const Show& show, const ProfileSet& profiles, con
   }
   if (best) return best;
 
+  // 3. A lit beam's axis.
   float bestBeamPx = options.beamRadiusPx;
   for (const FixtureDef& f : show.fixtures) {
     const auto st = state.find(f.id);

@@ -78,15 +78,25 @@ std::optional<glm::vec3> intersectHorizontalPlane(const Ray& ray, float heightM)
 // down): the point on that line.
 glm::vec3 closestOnVerticalLine(const Ray& ray, const glm::vec3& pointM);
 
-// The fixture under the pointer: its body (the mounting point, within bodyRadiusPx on screen)
-// first, nearest to the pointer (then to the camera); else a lit beam whose axis passes within
-// beamRadiusPx of the pointer (the axis from the lens to where it meets the venue, or
-// beamLengthM when nothing is hit or no BVH is given). Empty when nothing is near.
+// The fixture under the pointer, in this order:
+// 1. the body the ray through the pixel meets first (pickFixtureBody: the housing's boxes and
+//    meshes as the renderer draws them, posed with the fixture's position, rotation and the
+//    pan/tilt in `state`), when it is nearer than the venue surface on that ray (given a BVH):
+//    what is seen under the pointer is what is picked, never a body behind a wall;
+// 2. else its mounting point (the marker, within bodyRadiusPx on screen), nearest to the
+//    pointer (then to the camera);
+// 3. else a lit beam whose axis passes within beamRadiusPx of the pointer (the axis from the
+//    lens to where it meets the venue, or beamLengthM when nothing is hit or no BVH is given).
+// Empty when nothing is near.
 struct PickOptions {
   float bodyRadiusPx = 10.0f;
   float beamRadiusPx = 4.0f;
   float beamLengthM = 15.0f;
 };
+// The fixture whose posed body the ray meets first before maxDistanceM and before the venue
+// (when a BVH is given); empty when it meets none.
+std::optional<int> pickFixtureBody(const Show& show, const ProfileSet& profiles, const StageState& state,
+                                   const Ray& ray, float maxDistanceM, const Bvh* bvh = nullptr);
 std::optional<int> pickFixture(const Show& show, const ProfileSet& profiles, const StageState& state,
                                const ViewCamera& view, glm::vec2 pixel, const Bvh* bvh = nullptr,
                                const PickOptions& options = {});

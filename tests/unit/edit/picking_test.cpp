@@ -1,11 +1,19 @@
 // Picking without a window (shows/edit/picking.h): the camera maps points to the pixels the renderer
 // draws them at, rays hit the venue's triangles, a fixture placed on a surface hangs under it,
-// stands on it or points out of a wall, clicks find fixtures and beams, and the selection rule.
+// stands on it or points out of a wall, clicks find fixtures (their bodies, their mounting points)
+// and beams, and the selection rule.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <limits>
+#include <optional>
+
 #include <glm/geometric.hpp>
+#include <glm/gtx/intersect.hpp>
 
 #include "shows/edit/picking.h"
+#include "fixtures/body.h"
+#include "fixtures/gdtf.h"
 #include "fixtures/pose.h"
 #include "unit/scene/test_scenes.h"
 
@@ -203,6 +211,176 @@ TEST(Picking, ClickFindsTheFixtureOrItsBeam) {
   addFloor(v, 4.0f, 20.0f);
   const Bvh bvh(v);
   EXPECT_FALSE(pickFixture(s.show, s.profiles, s.stage, view, beam, &bvh));  // below the floor at y = 4
+}
+
+// A moving head hung at (0, 6, 0) with the default body of a moving head (head, yoke, base), its
+// lens 0.3 m below the pivot; the camera 3 m to its +X side, level with the pivot.
+struct MovingHeadScene {
+  Show show;
+  ProfileSet profiles;
+  StageState stage;
+  Body body;
+  glm::vec3 pivot{0.0f, 6.0f, 0.0f};
+  MovingHeadScene() {
+    auto p = std::make_shared<Profile>();
+    p->lensOffset = {0.0f, -0.3f, 0.0f};
+    body = defaultBody(0.05f, {p->lensOffset}, /*moving=*/true);
+    p->body = body;
+    profiles["head"] = p;
+    FixtureDef f;
+    f.id = 7;
+    f.profile = "head";
+    f.position = pivot;
+    show.fixtures.push_back(f);
+    stage[f.id] = Attributes{};  // dark: no beam to pick
+  }
+  static CameraState camera() {
+    CameraState c;
+    c.position = {3.0f, 6.0f, 0.0f};
+    c.target = {0.0f, 6.0f, 0.0f};
+    c.fovYDeg = 40.0f;
+    return c;
+  }
+  // A point on the head's face towards the camera (its local +X face), 80 % of the way from its
+  // centre to its front (lens) end, posed at `tiltDeg`.
+  glm::vec3 headPoint(float tiltDeg) const {
+    const glm::vec3 local = body.head.centerM + glm::vec3(0.5f * body.head.sizeM.x, -0.4f * body.head.sizeM.y, 0.0f);
+    return pivot + headRotation(glm::vec3(0.0f), 0.0f, tiltDeg) * local;
+  }
+};
+
+TEST(Picking, ClickOnAHeadFarFromItsMountingPointPicksIt) {
+  MovingHeadScene s;
+  const ViewCamera view(MovingHeadScene::camera(), {800.0f, 600.0f});
+  const PickOptions options;
+  const glm::vec2 mount = *view.project(s.pivot);
+  const glm::vec2 head = *view.project(s.headPoint(0.0f));
+  // Beyond the mounting point's radius, and the beam is dark: the old rules found nothing here.
+  ASSERT_GT(glm::length(head - mount), options.bodyRadiusPx + 5.0f);
+  EXPECT_EQ(pickFixture(s.show, s.profiles, s.stage, view, head), 7);
+  EXPECT_EQ(pickFixtureBody(s.show, s.profiles, s.stage, view.ray(head), 100.0f), 7);
+  // Beside the head (20 cm towards the camera's right, -Z, clear of the whole body): nothing.
+  const glm::vec2 beside = *view.project(s.headPoint(0.0f) + glm::vec3(0.0f, 0.0f, -0.2f));
+  EXPECT_FALSE(pickFixture(s.show, s.profiles, s.stage, view, beside));
+  // The mounting point still picks (the fallback), as before.
+  EXPECT_EQ(pickFixture(s.show, s.profiles, s.stage, view, mount + glm::vec2(4.0f, 0.0f)), 7);
+}
+
+TEST(Picking, ClickFollowsTheHeadWhenItTilts) {
+  MovingHeadScene s;
+  const ViewCamera view(MovingHeadScene::camera(), {800.0f, 600.0f});
+  const PickOptions options;
+  const glm::vec2 mount = *view.project(s.pivot);
+  const glm::vec2 was = *view.project(s.headPoint(0.0f));
+  const glm::vec2 now = *view.project(s.headPoint(90.0f));
+  ASSERT_GT(glm::length(was - mount), options.bodyRadiusPx + 5.0f);
+  ASSERT_GT(glm::length(now - mount), options.bodyRadiusPx + 5.0f);
+  ASSERT_GT(glm::length(now - was), 20.0f) << "the head moved on screen";
+  EXPECT_EQ(pickFixture(s.show, s.profiles, s.stage, view, was), 7);
+  EXPECT_FALSE(pickFixture(s.show, s.profiles, s.stage, view, now));
+  s.stage[7].tiltDeg = 90.0f;
+  EXPECT_FALSE(pickFixture(s.show, s.profiles, s.stage, view, was)) << "where the head was";
+  EXPECT_EQ(pickFixture(s.show, s.profiles, s.stage, view, now), 7) << "where the head is";
+}
+
+TEST(Picking, BodyBehindAWallIsNotPicked) {
+  MovingHeadScene s;
+  const ViewCamera view(MovingHeadScene::camera(), {800.0f, 600.0f});
+  const glm::vec2 head = *view.project(s.headPoint(0.0f));
+  // A wall between the camera (x = 3) and the fixture: the head is hidden.
+  Venue front = emptyVenue();
+  addBox(front, {1.5f, 0.0f, -5.0f}, {1.6f, 10.0f, 5.0f});
+  const Bvh frontBvh(front);
+  EXPECT_FALSE(pickFixture(s.show, s.profiles, s.stage, view, head, &frontBvh));
+  // A wall behind it (x = -2): the head is in front of the venue and wins.
+  Venue back = emptyVenue();
+  addBox(back, {-2.1f, 0.0f, -5.0f}, {-2.0f, 10.0f, 5.0f});
+  const Bvh backBvh(back);
+  EXPECT_EQ(pickFixture(s.show, s.profiles, s.stage, view, head, &backBvh), 7);
+}
+
+// Whether the ray meets any triangle of the posed meshes (glm's own two-sided ray-triangle
+// test, the oracle here: independent of the BVH picking goes through).
+bool meetsAnyTriangle(const std::vector<BodyMesh>& meshes, const Ray& ray) {
+  for (const BodyMesh& m : meshes) {
+    const TriangleMesh& t = *m.mesh;
+    for (size_t k = 0; k + 2 < t.indices.size(); k += 3) {
+      glm::vec2 bary;
+      float dist = 0.0f;
+      if (glm::intersectRayTriangle(ray.origin, ray.dir, m.originM + m.axes * t.positions[t.indices[k]],
+                                    m.originM + m.axes * t.positions[t.indices[k + 1]],
+                                    m.originM + m.axes * t.positions[t.indices[k + 2]], bary, dist) &&
+          dist > 0.0f)
+        return true;
+    }
+  }
+  return false;
+}
+
+TEST(Picking, GdtfBodyIsPickedOnItsMeshNotInItsGaps) {
+  auto g = loadGdtf(std::filesystem::path(HAZE_SHARED_DATA) / "gdtf" /
+                    "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  ASSERT_TRUE(g.ok()) << g.error().str();
+  const Body body = g->profile->housing();
+  ASSERT_TRUE(body.head.mesh && body.yokeLeft.mesh && body.base.mesh);
+  Show show;
+  ProfileSet profiles;
+  StageState stage;
+  profiles["bmfl"] = g->profile;
+  FixtureDef f;
+  f.id = 3;
+  f.profile = "bmfl";
+  f.position = {0.0f, 6.0f, 0.0f};
+  show.fixtures.push_back(f);
+  stage[f.id] = Attributes{};
+  CameraState c;
+  c.position = {0.4f, 6.1f, 2.5f};
+  c.target = {0.0f, 6.0f, 0.0f};
+  c.fovYDeg = 40.0f;
+  const ViewCamera view(c, {800.0f, 600.0f});
+  const PickOptions options;
+  const glm::vec2 mount = *view.project(f.position);
+
+  // The triangle of the head's model nearest its lens end: a click on its centroid is on the mesh.
+  const TriangleMesh& head = *body.head.mesh;
+  size_t lowest = 0;
+  float lowestY = std::numeric_limits<float>::infinity();
+  for (size_t k = 0; k + 2 < head.indices.size(); k += 3) {
+    const float y = head.positions[head.indices[k]].y + head.positions[head.indices[k + 1]].y +
+                    head.positions[head.indices[k + 2]].y;
+    if (y < lowestY) {
+      lowestY = y;
+      lowest = k;
+    }
+  }
+  const glm::vec3 centroid = (head.positions[head.indices[lowest]] + head.positions[head.indices[lowest + 1]] +
+                              head.positions[head.indices[lowest + 2]]) / 3.0f;
+  // Posed at rotation 0, pan 0, tilt 0: the part's frame is the world's, about the pivot.
+  const glm::vec2 onMesh = *view.project(f.position + centroid);
+  ASSERT_GT(glm::length(onMesh - mount), options.bodyRadiusPx + 5.0f);
+  EXPECT_EQ(pickFixture(show, profiles, stage, view, onMesh), 3);
+
+  // A pixel inside a part's bounding box whose ray meets none of the triangles (between the
+  // yoke's arms, around the head): nothing is picked there.
+  std::vector<BodyBox> boxes;
+  std::vector<BodyMesh> meshes;
+  poseBody(body, f.position, glm::vec3(0.0f), 0.0f, 0.0f, boxes, &meshes);
+  ASSERT_EQ(meshes.size(), 3u);
+  poseBody(body, f.position, glm::vec3(0.0f), 0.0f, 0.0f, boxes);  // the parts as their bounding boxes
+  ASSERT_EQ(boxes.size(), 3u);
+  std::optional<glm::vec2> gap;
+  for (int y = 0; y < 600 && !gap; y += 6) {
+    for (int x = 0; x < 800 && !gap; x += 6) {
+      const glm::vec2 px(static_cast<float>(x), static_cast<float>(y));
+      if (glm::length(px - mount) <= options.bodyRadiusPx + 5.0f) continue;
+      const Ray r = view.ray(px);
+      bool inBox = false;
+      for (const BodyBox& b : boxes) inBox = inBox || intersectBox(b, r.origin, r.dir, 100.0f).hit;
+      if (inBox && !meetsAnyTriangle(meshes, r)) gap = px;
+    }
+  }
+  ASSERT_TRUE(gap) << "no ray through a bounding box that misses the BMFL's meshes";
+  EXPECT_FALSE(pickFixture(show, profiles, stage, view, *gap)) << "pixel " << gap->x << ", " << gap->y;
 }
 
 TEST(Picking, SelectionRule) {
