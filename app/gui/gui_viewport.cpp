@@ -155,7 +155,8 @@ void pressed(Gui& gui, const ViewCamera& view, glm::vec2 local, int button) {
       return;
     }
   }
-  const auto picked = pickFixture(doc.show(), doc.profiles(), gui.stage, view, local, nullptr,
+  // Its body or its marker (not its beam); the venue hides a body behind it, as for a click.
+  const auto picked = pickFixture(doc.show(), doc.profiles(), gui.stage, view, local, &doc.bvh(),
                                   PickOptions{.beamRadiusPx = 0.0f});
   if (!picked || std::find(doc.selection.begin(), doc.selection.end(), *picked) == doc.selection.end()) return;
   const FixtureDef* f = doc.show().findFixture(*picked);
