@@ -164,17 +164,26 @@ TEST_F(OpticsRender, TwoGobosOnTheGpuAgreeWithTheReference) {
     for (const auto& file : writeDiagnostics("two_gobos", two, twoRef)) std::printf("[ two gobos ] wrote %s\n", file.c_str());
 }
 
-TEST(OpticsFrame, SpinningWheelsStandAtRotationPlusSpinTimesTheClock) {
+// One 16-degree spot (profile "spot", fixture 1) hanging at 5 m, for the frame builder's tests.
+Show oneSpotShow(const char* file) {
   Show show;
-  show.file = "spin.haze.json";
+  show.file = file;
   show.fixtures.push_back(FixtureDef{.id = 1, .name = "", .profile = "spot", .mode = "", .position = {0, 5, 0}, .rotationDeg = {}, .patch = {}});
+  return show;
+}
+std::shared_ptr<Profile> spotProfile() {
   auto profile = std::make_shared<Profile>();
   auto d = parametricDistribution(10.0f, 16.0f, 1000.0f);
-  ASSERT_TRUE(d.ok());
-  profile->distribution = std::make_shared<const Distribution>(*d);
+  EXPECT_TRUE(d.ok());
+  if (d.ok()) profile->distribution = std::make_shared<const Distribution>(*d);
   profile->fieldAngleDeg = 16.0f;
   profile->zoomDeg = {16.0f, 16.0f};
-  ProfileSet profiles{{"spot", profile}};
+  return profile;
+}
+
+TEST(OpticsFrame, SpinningWheelsStandAtRotationPlusSpinTimesTheClock) {
+  const Show show = oneSpotShow("spin.haze.json");
+  ProfileSet profiles{{"spot", spotProfile()}};
   StageState stage;
   Attributes a;
   a.intensity = 1.0f;
@@ -198,15 +207,8 @@ TEST(OpticsFrame, SpinningWheelsStandAtRotationPlusSpinTimesTheClock) {
 }
 
 TEST(OpticsFrame, PrismBecomesNBeamsAndAStillStrobeItsDuty) {
-  Show show;
-  show.file = "optics.haze.json";
-  show.fixtures.push_back(FixtureDef{.id = 1, .name = "", .profile = "spot", .mode = "", .position = {0, 5, 0}, .rotationDeg = {}, .patch = {}});
-  auto profile = std::make_shared<Profile>();
-  auto d = parametricDistribution(10.0f, 16.0f, 1000.0f);
-  ASSERT_TRUE(d.ok());
-  profile->distribution = std::make_shared<const Distribution>(*d);
-  profile->fieldAngleDeg = 16.0f;
-  profile->zoomDeg = {16.0f, 16.0f};
+  const Show show = oneSpotShow("optics.haze.json");
+  auto profile = spotProfile();
   profile->prisms.push_back(PrismSpec{"5", 5, 10.0f, false});
   ProfileSet profiles{{"spot", profile}};
   StageState stage;
