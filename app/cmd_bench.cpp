@@ -136,7 +136,7 @@ constexpr const char* kBenchUsage =
     "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells separate|merged]]\n"
     "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
     "                  [--min-samples M] [--refine C] [--density N] [--no-bodies | --compare-bodies]\n"
-    "                  [--compare-reference] [--json]\n"
+    "                  [--shadows soft|hard|compare] [--compare-reference] [--json]\n"
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
     "first unless --cue, from the show's first camera unless --camera) per frame and per pass;\n"
@@ -146,11 +146,13 @@ constexpr const char* kBenchUsage =
     "with a hazer (the bench scene's: docs/rendering.md, \"Density\"), alternating frame by frame with the\n"
     "uniform medium, and gives the cost ratio. --no-bodies leaves the fixtures' housings out;\n"
     "--compare-bodies also renders the frame without them, alternating frame by frame, and gives the\n"
-    "bodies' share of the frame (docs/rendering.md, \"Fixture bodies\").\n";
+    "bodies' share of the frame (docs/rendering.md, \"Fixture bodies\"). --shadows soft|hard sets the\n"
+    "shadows (default: the show's, soft for the synthetic stage); --shadows compare renders soft and hard\n"
+    "alternating frame by frame and gives the soft shadows' cost ratio (docs/rendering.md, \"Soft shadows\").\n";
 
 int runBench(const Args& args) {
   int fixtures = -1, width = 1280, height = 720, frames = 5;
-  std::string quality = "default", showPath, cue, camera, cells = "separate";
+  std::string quality = "default", showPath, cue, camera, cells = "separate", shadows;
   bool json = false, compare = false, study = false, noBodies = false, compareBodies = false;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
   double refine = -1.0;                            // -1: the preset's
@@ -174,7 +176,8 @@ int runBench(const Args& args) {
       .integer("--min-samples", minSamples, 0, 256, "0..256")
       .number("--refine", refine, 0.0, 2.0, "0..2 (0 = no refinement)")
       .integer("--density", densityCells, 2, kMaxDensityCellsPerSide, "2..256 cells per side")
-      .choice("--cells", cells, {"separate", "merged"});
+      .choice("--cells", cells, {"separate", "merged"})
+      .choice("--shadows", shadows, {"soft", "hard", "compare"});
   if (auto done = cli.parse(args)) return *done;
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
@@ -192,11 +195,16 @@ int runBench(const Args& args) {
     fixtures = fixtures < 0 ? 16 : fixtures;
     venue = benchVenue(fixtures);
     frame = benchFrame(fixtures);
+    frame.softShadows = true;  // as a show has them unless it asks for hard ones
   } else if (Status s = loadBenchShow(showPath, cue, camera, cells == "merged", venue, frame, fixtures); !s) {
     return fail(s.error().str());
   }
   if (noBodies && compareBodies) return fail("--no-bodies and --compare-bodies exclude each other");
   if (compareBodies && densityCells > 0) return fail("--compare-bodies and --density exclude each other");
+  const bool compareShadows = shadows == "compare";
+  if (compareShadows && (compareBodies || densityCells > 0))
+    return fail("--shadows compare excludes --compare-bodies and --density");
+  if (!shadows.empty()) frame.softShadows = shadows != "hard";
   if (noBodies) {  // the fixtures' housings left out, as haze render --no-bodies does
     frame.bodies.clear();
     frame.bodyMeshes.clear();
@@ -227,6 +235,14 @@ int runBench(const Args& args) {
     denseFrame = frame;
     denseFrame.bodies.clear();
     denseFrame.bodyMeshes.clear();
+    auto r = Renderer::create(venue, settings);
+    if (!r) return fail(r.error().str());
+    dense = std::move(*r);
+  }
+  // The same frame with hard shadows, the same way: what the soft shadows cost.
+  if (compareShadows) {
+    denseFrame = frame;
+    denseFrame.softShadows = false;
     auto r = Renderer::create(venue, settings);
     if (!r) return fail(r.error().str());
     dense = std::move(*r);
@@ -317,7 +333,19 @@ int runBench(const Args& args) {
   out["light_map_layers"] = lightLayers;
   out["peak_memory_mb"] = peakMemoryMb();
   out["warnings"] = warnings;
-  if (dense && compareBodies) {
+  out["shadows"] = frame.softShadows ? "soft" : "hard";
+  if (dense && compareShadows) {
+    const double soft = median(total), hard = median(denseTotal);
+    const double softCpu = median(cpu), hardCpu = median(denseCpu);
+    out["shadows_compare"] = {{"median_frame_ms_hard", hard},
+                              {"median_frame_cpu_ms_hard", hardCpu},
+                              {"pass_ms_hard", {{"surfaces", median(denseSurfaces)}, {"planes", median(denseBeams)}}},
+                              {"ratio_frame", hard > 0 ? soft / hard : 0.0},
+                              {"ratio_cpu", hardCpu > 0 ? softCpu / hardCpu : 0.0},
+                              {"ratio_planes", median(denseBeams) > 0 ? median(beams) / median(denseBeams) : 0.0},
+                              {"ratio_surfaces",
+                               median(denseSurfaces) > 0 ? median(surfaces) / median(denseSurfaces) : 0.0}};
+  } else if (dense && compareBodies) {
     const double with = median(total), without = median(denseTotal);
     out["bodies"] = {{"boxes", frame.bodies.size()},
                      {"meshes", frame.bodyMeshes.size()},
@@ -363,7 +391,13 @@ int runBench(const Args& args) {
                   rs.refineCurvature);
     std::printf("  shadow maps %d px, %d light maps, %.1f beams per lit surface tile; peak memory %.0f MB\n", shadowSize,
                 lightLayers, beamsPerTile, peakMemoryMb());
-    if (dense && compareBodies)
+    if (dense && compareShadows)
+      std::printf("  hard shadows: %.1f ms per frame (soft %.2fx), %.0f ms CPU (%.2fx), planes %.1f ms (%.2fx), "
+                  "surfaces %.1f ms (%.2fx)\n", median(denseTotal), out["shadows_compare"]["ratio_frame"].get<double>(),
+                  median(denseCpu), out["shadows_compare"]["ratio_cpu"].get<double>(), median(denseBeams),
+                  out["shadows_compare"]["ratio_planes"].get<double>(), median(denseSurfaces),
+                  out["shadows_compare"]["ratio_surfaces"].get<double>());
+    else if (dense && compareBodies)
       std::printf("  bodies (%zu boxes, %zu meshes): %.1f ms per frame without them (with them %.2fx, %.1f %% of the "
                   "frame); surfaces %.1f ms without\n", frame.bodies.size(), frame.bodyMeshes.size(), median(denseTotal),
                   out["bodies"]["ratio_frame"].get<double>(), 100 * out["bodies"]["share_of_frame"].get<double>(),

@@ -57,7 +57,9 @@ constexpr const char* kUsage =
     "--progress reports progress on stderr even when it is not a terminal (it always is on one).\n"
     "--movement real|instant: pan, tilt and zoom at the fixtures' speeds (default) or at once (--at, --video).\n"
     "--cells separate|merged: one beam per cell (default), or a fixture's alike cells as one beam.\n"
-    "--no-bodies leaves the fixtures' housings out (docs/fixtures.md, \"Bodies\").\n";
+    "--no-bodies leaves the fixtures' housings out (docs/fixtures.md, \"Bodies\").\n"
+    "--shadows soft|hard: shadows softened by each lens disc or point lights' (default: the show's\n"
+    "atmosphere.shadows, soft unless it says hard; docs/physics.md, \"Soft shadows\").\n";
 
 std::string secondsText(double s) {
   char text[32];
@@ -69,7 +71,7 @@ std::string secondsText(double s) {
 
 int runRender(const Args& args) {
   std::string showPath, cue, list, out, camera, quality = "default", exposureMode, exrPixel = "half", movement = "real",
-                                                       cells = "separate";
+                                                       cells = "separate", shadows;
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
   bool allCues = false, progress = false, caption = false, noBodies = false;
@@ -98,6 +100,7 @@ int runRender(const Args& args) {
       .number("--bloom", bloom, 0, 1, "a fraction 0..1")
       .choice("--movement", movement, {"real", "instant"})
       .choice("--cells", cells, {"separate", "merged"})
+      .choice("--shadows", shadows, {"soft", "hard"})
       .choice("--exr-pixel", exrPixel, {"half", "float"})
       .text("-o|--output", out, "a file or a folder")
       .text("--video", video, "a video file (OUT.mp4) or an image sequence (OUT-%05d.png)")
@@ -150,6 +153,7 @@ int runRender(const Args& args) {
                            .bloom = static_cast<float>(bloom), .mergeCells = cells == "merged", .bodies = !noBodies,
                            .exrPixel = *parseExrPixel(exrPixel), .progress = progress};
   if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
+  if (!shadows.empty()) options.softShadows = shadows == "soft";
   if (!plays.empty()) {
     auto state = playListsAt(*show, *profiles, plays, at < 0 ? 1e9 : at, movement == "real");
     if (!state) return fail(state.error().str());

@@ -73,6 +73,7 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
   }
   frame.medium = mediumState(show.atmosphere);
   frame.medium.density = options.density;
+  frame.softShadows = options.softShadows.value_or(show.atmosphere.softShadows);
 
   for (const FixtureDef& f : show.fixtures) {
     auto p = profiles.find(f.profile);

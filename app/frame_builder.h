@@ -32,6 +32,8 @@ struct FrameOptions {
   double clockS = 0.0;
   // The medium's density field at the frame's time (app/atmosphere_field.h); none: uniform.
   std::shared_ptr<const DensityField> density;
+  // Soft or hard shadows (--shadows); none: the show's atmosphere.shadows.
+  std::optional<bool> softShadows;
 };
 
 // cameraName "" = the show's first camera (or a default view of the stage when it has none).

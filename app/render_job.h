@@ -28,6 +28,7 @@ struct RenderJobOptions {
   float bloom = 0.0f;  // PNG only
   bool mergeCells = false;  // docs/cells.md, "Cost": a fixture's alike cells as one beam
   bool bodies = true;       // the fixtures' housings (docs/fixtures.md, "Bodies"); --no-bodies
+  std::optional<bool> softShadows;  // --shadows soft|hard; none: the show's atmosphere.shadows
   ExrPixel exrPixel = ExrPixel::Half;  // EXR only
   bool progress = false;  // --progress: report even when stderr is not a terminal (app/progress.h)
 };

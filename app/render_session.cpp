@@ -79,7 +79,8 @@ Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const S
                           FrameOptions{.mergeCells = options_.mergeCells,
                                        .bodies = options_.bodies,
                                        .clockS = clockS,
-                                       .density = std::move(density)});
+                                       .density = std::move(density),
+                                       .softShadows = options_.softShadows});
   if (!frame) return frame.error();
   referenceImage_.reset();
   if (options_.quality == Quality::Reference) {

@@ -145,6 +145,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
     glProgramUniform1i(prog, HAZE_LOC_PHASE, static_cast<int>(med.phase));  // Phase's values are HAZE_PHASE_*
     glProgramUniform1f(prog, HAZE_LOC_PHASE_G, med.g);
     density.bind(prog);
+    beams.bindSoftShadows(prog);
   }
   beams.bind();
 

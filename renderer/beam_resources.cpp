@@ -91,7 +91,14 @@ float coreCos2(const LightMap& map, float cutoffRad) {
 
 }  // namespace
 
-BeamResources::BeamResources(const BeamResourceSettings& settings) : settings_(settings) {}
+BeamResources::BeamResources(const BeamResourceSettings& settings) : settings_(settings) {
+  const GLuint s = shadowDepthSampler_.id();
+  glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(s, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+}
 
 void BeamResources::ensureShadowCapacity(int beams) {
   if (maxLayers_ == 0) glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers_);
@@ -174,6 +181,7 @@ float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float ne
 BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& venue,
                                       const gl::Program& shadowProgram) {
   BeamUpdateStats stats;
+  softShadows_ = frame.softShadows;
   const int n = static_cast<int>(frame.beams.size());
   ensureShadowCapacity(n);
   stats.shadowMapSize = shadowSize_;
@@ -261,6 +269,12 @@ void BeamResources::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HAZE_SSBO_BEAMS, ssbo_.id());
   glBindTextureUnit(HAZE_UNIT_LIGHT_MAPS, lightMaps_.id());
   glBindTextureUnit(HAZE_UNIT_SHADOW_MAPS, shadowMaps_.id());
+  glBindTextureUnit(HAZE_UNIT_SHADOW_DEPTH, shadowMaps_.id());
+  glBindSampler(HAZE_UNIT_SHADOW_DEPTH, shadowDepthSampler_.id());
+}
+
+void BeamResources::bindSoftShadows(unsigned int program) const {
+  glProgramUniform1i(program, HAZE_LOC_SOFT_SHADOWS, softShadows_ ? 1 : 0);
 }
 
 }  // namespace haze

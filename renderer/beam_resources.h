@@ -54,6 +54,9 @@ class BeamResources {
 
   // The storage buffer, light maps and shadow maps at their shaders/interface.h bindings.
   void bind() const;
+  // The soft-shadow switch (FrameState::softShadows of the last update) on a program that
+  // includes beams.glsl and tests visibility.
+  void bindSoftShadows(unsigned int program) const;
   int count() const { return static_cast<int>(gpuBeams_.size()); }
   const std::vector<GpuBeam>& beams() const { return gpuBeams_; }
   const BeamResourceSettings& settings() const { return settings_; }
@@ -81,6 +84,9 @@ class BeamResources {
   gl::Texture shadowMaps_;
   gl::Buffer ssbo_;
   gl::Framebuffer shadowFbo_{"shadow_fbo"};
+  // Reads the shadow maps' raw depths (no compare, nearest) for the soft shadows' blocker search.
+  gl::Sampler shadowDepthSampler_{"shadow_depths"};
+  bool softShadows_ = false;
   std::vector<uint64_t> lightKeys_;    // per light-map layer, what is baked there (0: nothing)
   std::vector<float> extents_;         // per light-map layer
   std::vector<uint64_t> shadowKeys_;   // per beam (= shadow layer)

@@ -231,6 +231,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glProgramUniform1i(prog, HAZE_LOC_SURFACE_BEAM_COUNT, m.beams.count());
   glProgramUniform1i(prog, HAZE_LOC_SURFACE_TILE_COLUMNS, tiled ? m.tiles.columns() : 0);
   glProgramUniform1i(prog, HAZE_LOC_SURFACE_MASK_WORDS, m.tiles.maskWords());
+  m.beams.bindSoftShadows(prog);
   m.density.bind(prog);
   m.venue.bind();
   for (const GpuVenue::Draw& d : m.venue.draws()) {

@@ -9,6 +9,15 @@ const float PI = 3.14159265358979323846;
 layout(std430, binding = HAZE_SSBO_BEAMS) readonly buffer Beams { Beam beams[]; };
 layout(binding = HAZE_UNIT_LIGHT_MAPS) uniform sampler2DArray uLightMaps;
 layout(binding = HAZE_UNIT_SHADOW_MAPS) uniform sampler2DArrayShadow uShadowMaps;
+// The same shadow maps through a sampler without compare mode (nearest): the raw depths that
+// the soft shadows' blocker search averages.
+layout(binding = HAZE_UNIT_SHADOW_DEPTH) uniform sampler2DArray uShadowDepths;
+layout(location = HAZE_LOC_SOFT_SHADOWS) uniform int uSoftShadows;  // 0: V is the point test from the lens centre
+
+// The rotation of the soft shadows' tap pattern, a fraction of a turn: the caller seeds it per
+// pixel (its noise), and every soft lookup moves it on by the golden ratio, so the samples of
+// one walk through the haze each see the pattern turned differently and their mean converges.
+float gShadowTurn = 0.0;
 
 // I_eff (cd per channel) towards world point x, without visibility (docs/physics.md); wl is the
 // unit direction the light travels, r the distance from the lens.
@@ -23,21 +32,86 @@ vec3 beamIntensity(Beam b, vec3 x, out vec3 wl, out float r) {
   return cd * b.color.rgb;
 }
 
-// V(x) in the medium: one hardware 2x2 PCF tap (shafts are soft; the surfaces get five).
-float beamVisibilityVolume(Beam b, vec3 x) {
-  vec4 c = b.shadowViewProj * vec4(x, 1.0);
+// Soft shadows (docs/physics.md, "Soft shadows"; docs/rendering.md, "Soft shadows"): the
+// fraction of the lens disc (radius b.lens.x, perpendicular to z_b) that the point with shadow
+// clip coordinates c sees, by percentage-closer soft shadows (Fernando 2005). The disc seen
+// from the point, projected onto a plane of blockers at axial depth w_b, is a disc of radius
+// r_lens (1 / w_b - 1 / w_r) in tan(angle) units around the point's own direction (the shadow
+// map's planes of equal depth are parallel to the lens, so this is exact for a flat blocker):
+// a blocker search over the region where blockers down to w_r / 3 could hide part of the disc
+// gives the mean 1 / w_b, then PCF over that disc gives the visible fraction. Taps lie on a
+// Vogel spiral turned by gShadowTurn.
+float softVisibility(Beam b, vec4 c, int blockerTaps, int filterTaps) {
+  vec3 s = c.xyz / c.w * 0.5 + 0.5;
+  mat4 m = b.shadowViewProj;
+  // Shadow-map u per unit of tan(angle) off the axis: 0.5 / tan(fov / 2), half the length of
+  // the matrix's first row (a rotation times the projection's P00).
+  float uvPerTan = 0.5 * length(vec3(m[0][0], m[1][0], m[2][0]));
+  // Window depth d and axial depth w: 2 d - 1 = -P22 + P32 / w. Row 3 of the matrix is minus
+  // the view's z row, row 2 is -P22 times row 3 plus P32 in the last column.
+  vec3 rz = vec3(m[0][2], m[1][2], m[2][2]), rw = vec3(m[0][3], m[1][3], m[2][3]);
+  float p22 = -dot(rz, rw) / dot(rw, rw);
+  float invP32 = 1.0 / (m[3][2] + p22 * m[3][3]);
+  float invWr = 1.0 / c.w;
+  float k = b.lens.x * uvPerTan;  // the disc's projected radius in map units per (1 / w_b - 1 / w_r)
+  float texel = 1.0 / float(textureSize(uShadowDepths, 0).x);
+  float searchR = 2.0 * k * invWr;  // blockers from w_r / 3 to w_r
+  float turn = 6.28318531 * gShadowTurn;
+  gShadowTurn = fract(gShadowTurn + 0.618034);
+  const float GOLDEN = 2.39996323;
+  float blockers = 0.0, sumInvW = 0.0;
+  for (int i = 0; i < blockerTaps; ++i) {
+    float a = float(i) * GOLDEN + turn;
+    vec2 uv = s.xy + searchR * sqrt((float(i) + 0.5) / float(blockerTaps)) * vec2(cos(a), sin(a));
+    float d = texture(uShadowDepths, vec3(uv, b.zb.w)).r;
+    if (d < s.z) {
+      blockers += 1.0;
+      sumInvW += (2.0 * d - 1.0 + p22) * invP32;
+    }
+  }
+  if (blockers == 0.0) return 1.0;
+  float filterR = k * max(sumInvW / blockers - invWr, 0.0);
+  if (filterR < texel) return texture(uShadowMaps, vec4(s.xy, b.zb.w, s.z));  // as sharp as the map
+  float v = 0.0;
+  turn += 1.0;  // not the search's pattern
+  for (int i = 0; i < filterTaps; ++i) {
+    float a = float(i) * GOLDEN + turn;
+    vec2 uv = s.xy + filterR * sqrt((float(i) + 0.5) / float(filterTaps)) * vec2(cos(a), sin(a));
+    v += texture(uShadowMaps, vec4(uv, b.zb.w, s.z));
+  }
+  return v / float(filterTaps);
+}
+
+// Taps of the soft shadows: the surfaces' one lookup per pixel and beam can afford more than
+// each sample of a walk through the haze, whose many samples average their patterns.
+const int SOFT_SURFACE_BLOCKER_TAPS = 16;
+const int SOFT_SURFACE_FILTER_TAPS = 16;
+const int SOFT_VOLUME_BLOCKER_TAPS = 4;
+const int SOFT_VOLUME_FILTER_TAPS = 4;
+
+// V in the medium from the point's shadow clip coordinates c: one hardware 2x2 PCF tap (shafts
+// are soft; the surfaces get five), or the soft shadows' few taps.
+float beamVisibilityClip(Beam b, vec4 c) {
   if (c.w <= 0.0) return 1.0;
   vec3 s = c.xyz / c.w * 0.5 + 0.5;
   if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
+  if (uSoftShadows != 0 && b.lens.x > 0.0)
+    return softVisibility(b, c, SOFT_VOLUME_BLOCKER_TAPS, SOFT_VOLUME_FILTER_TAPS);
   return texture(uShadowMaps, vec4(s.xy, b.zb.w, s.z));
 }
 
-// V(x): 1 where the lens sees x, 0 in shadow; hardware 2x2 PCF plus four taps around it.
+// V(x) in the medium.
+float beamVisibilityVolume(Beam b, vec3 x) { return beamVisibilityClip(b, b.shadowViewProj * vec4(x, 1.0)); }
+
+// V(x): 1 where the lens sees x, 0 in shadow; hardware 2x2 PCF plus four taps around it, or
+// the soft shadows' visible fraction of the disc.
 float beamVisibility(Beam b, vec3 x) {
   vec4 c = b.shadowViewProj * vec4(x, 1.0);
   if (c.w <= 0.0) return 1.0;
   vec3 s = c.xyz / c.w * 0.5 + 0.5;
   if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0)))) return 1.0;
+  if (uSoftShadows != 0 && b.lens.x > 0.0)
+    return softVisibility(b, c, SOFT_SURFACE_BLOCKER_TAPS, SOFT_SURFACE_FILTER_TAPS);
   vec2 texel = 1.0 / vec2(textureSize(uShadowMaps, 0).xy);
   float v = texture(uShadowMaps, vec4(s.xy, b.zb.w, s.z)) * 0.5;
   v += texture(uShadowMaps, vec4(s.xy + vec2(0.5, 0.5) * texel, b.zb.w, s.z)) * 0.125;

@@ -34,6 +34,7 @@
 #define HAZE_UNIT_LENS_PATH 11      // density.glsl: the integral of D from each lens, over light-map (u, v) x r
 #define HAZE_UNIT_SCATTER_FINE 12   // composite.frag.glsl: full-resolution in-scattering where refined
 #define HAZE_UNIT_REFINE_MASK 13    // composite.frag.glsl: 1 where the pixel was refined
+#define HAZE_UNIT_SHADOW_DEPTH 14   // beams.glsl: the shadow maps again, raw depth (no compare; soft shadows' blocker search)
 // No image units are used.
 
 // ---- Shader storage buffer bindings -------------------------------------------------------
@@ -123,6 +124,9 @@
 #define HAZE_LOC_EYE_PATH_UP_TAN 66     // vec3: up * tan(fov_y / 2)
 #define HAZE_LOC_EYE_PATH_DEPTH 67      // float: the view depth of the map's last slice
 #define HAZE_LOC_LENS_PATH_GRID 68      // ivec4: tiles across, tiles down, texels per tile side, r slices
+
+// beams.glsl's soft shadows (with the surface and virtual-plane programs; 71..74 free for them)
+#define HAZE_LOC_SOFT_SHADOWS 70        // int: 1 = V(x) is the visible fraction of the lens disc
 
 // ---- Enums --------------------------------------------------------------------------------
 // haze::Phase (renderer/scene/frame_state.h) asserts its values against these.

@@ -34,6 +34,7 @@ void main() {
   vec3 v = eyeRay(uv * 2.0 - 1.0);
   float len = length(v);  // metres of ray per metre of view depth
   float xi = uJitter != 0 ? fract(ign(gl_FragCoord.xy) + uFrameJitter) : 0.5;
+  gShadowTurn = fract(ign(gl_FragCoord.yx) + uFrameJitter);  // the soft shadows' taps (beams.glsl)
   float dz = uDepthRange.y;
   Beam b = beams[uBeam];
 #ifdef FUSED

@@ -68,13 +68,7 @@ vec3 scatterAt(Beam b, BeamRay s, float z) {
   if (p.z <= b.lensPos.w * r) return vec3(0.0);  // outside the cone
   vec2 uv = p.xy / p.z * b.xb.w * 0.5 + 0.5;
   float cd = texture(uLightMaps, vec3(uv, b.yb.w)).r;
-  vec4 c = s.c0 + z * s.c1;
-  float vis = 1.0;
-  if (c.w > 0.0) {
-    vec3 sc = c.xyz / c.w * 0.5 + 0.5;
-    if (all(greaterThanEqual(sc.xy, vec2(0.0))) && all(lessThanEqual(sc.xy, vec2(1.0))))
-      vis = texture(uShadowMaps, vec4(sc.xy, b.zb.w, sc.z));
-  }
+  float vis = beamVisibilityClip(b, s.c0 + z * s.c1);
   float cosA = (s.q0 + z * s.q1) / r;
   if (uDensityOn == 0)
     return uSigmaS * phaseFunction(cosA) * vis * cd * b.color.rgb * exp(-uSigmaT * (r + z * s.len)) / r2;

@@ -53,6 +53,8 @@ vec3 beamIrradiance(int i, vec3 n) {
 }
 
 void main() {
+  // Soft shadows' tap pattern turned per pixel (interleaved gradient noise, Jimenez 2014).
+  gShadowTurn = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
   vec3 toEye = uEye - vPosition;
   float T = length(toEye);
   vec3 n = normalize(vNormal);

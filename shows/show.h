@@ -47,6 +47,9 @@ struct AtmosphereDef {
   glm::vec3 background{0.0f};   // number or [r, g, b] in the file; 0 unless the show sets one
   // The density field D(x) (docs/shows.md, "Density"); none: D = 1 everywhere.
   std::optional<DensitySpec> density;
+  // "shadows": "soft" (default) | "hard": shadows softened by each lens disc, or point lights
+  // (docs/physics.md, "Soft shadows"; FrameState::softShadows).
+  bool softShadows = true;
 };
 
 struct Patch {

@@ -334,7 +334,7 @@ void readAtmosphere(Reader& r, const json& root, Show& show) {
   if (!a || !r.isObject(*a, "/atmosphere", "the atmosphere")) return;
   const std::string p = "/atmosphere";
   AtmosphereDef& at = show.atmosphere;
-  r.onlyKeys(*a, p, {"scattering", "absorption", "phase", "g", "ambient", "background", "density"});
+  r.onlyKeys(*a, p, {"scattering", "absorption", "phase", "g", "ambient", "background", "density", "shadows"});
   r.numberMember(*a, p, "scattering", false, 0.0, kInf, "a scattering coefficient in 1/m", at.scattering);
   r.numberMember(*a, p, "absorption", false, 0.0, kInf, "an absorption coefficient in 1/m", at.absorption);
   std::string phase;
@@ -349,6 +349,13 @@ void readAtmosphere(Reader& r, const json& root, Show& show) {
   if (const json* j = r.member(*a, p, "background", false))
     r.greyOrRgb(*j, p + "/background", "the background radiance", at.background);
   if (const json* j = r.member(*a, p, "density", false)) readDensity(r, *j, p + "/density", at);
+  std::string shadows;
+  if (r.stringMember(*a, p, "shadows", false, "a shadow kind", shadows, true)) {
+    if (shadows == "soft" || shadows == "hard")
+      at.softShadows = shadows == "soft";
+    else
+      r.problem(p + "/shadows", "unknown shadow kind \"" + shadows + "\"; expected soft or hard");
+  }
 }
 
 void readCameras(Reader& r, const json& root, Show& show) {

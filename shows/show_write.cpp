@@ -188,6 +188,7 @@ ojson showJson(const Show& s) {
   at["ambient"] = greyOrRgb(a.ambient);
   if (a.background != glm::vec3(0.0f)) at["background"] = greyOrRgb(a.background);
   if (a.density) at["density"] = densityJson(*a.density);
+  if (!a.softShadows) at["shadows"] = "hard";  // soft, the default, is not written
   root["atmosphere"] = at;
   ojson cams = ojson::array();
   for (const CameraDef& c : s.cameras) {

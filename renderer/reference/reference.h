@@ -32,6 +32,12 @@ struct ReferenceOptions {
   // Geometry closer than this to a beam's lens casts no shadow (the GPU's shadow-map near
   // plane, or a fixture's own housing in the venue). 0 = every triangle counts.
   float lensClearanceM = 0.0f;
+  // Soft shadows (FrameState::softShadows): V(x) is the fraction of the lens disc seen from x,
+  // counted over this many stratified points of the disc (docs/reference.md, "Soft shadows").
+  int lensDiscSamples = 64;
+  // Test the centre and eight rim points first and sample the whole disc only where they
+  // disagree (the penumbra); false: always the whole disc.
+  bool lensDiscProbe = true;
   // Worker threads; 0 = one per hardware thread.
   int threads = 0;
   // Called on the calling thread after each row it finishes, with the rows done by all threads

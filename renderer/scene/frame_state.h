@@ -65,6 +65,11 @@ struct FrameState {
   std::vector<BodyBox> bodies;
   // The parts that have a model of their own (a GDTF's mesh): its triangles, placed.
   std::vector<BodyMesh> bodyMeshes;
+  // Soft shadows (docs/physics.md, "Soft shadows"): V(x) is the fraction of each beam's lens
+  // disc (BeamOptics::lensRadiusM) seen from x, an area light's penumbra; false: the point
+  // test from the lens centre. Off here so that hand-built frames (tests) keep point lights;
+  // shows turn it on unless they ask for "shadows": "hard" (app/frame_builder.cpp).
+  bool softShadows = false;
 };
 
 }  // namespace haze
