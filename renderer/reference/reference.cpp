@@ -93,12 +93,13 @@ bool segmentClear(const Bvh& bvh, const glm::vec3& p, const glm::vec3& x, const 
 // V(x) with soft shadows (docs/physics.md, "Soft shadows"): the fraction of the lens disc
 // visible from x. First a probe of nine points (the centre and eight on the rim, 45 degrees
 // apart); when they agree that is the answer, otherwise the disc's area is sampled by
-// o.lensDiscSamples stratified points (a sunflower: point k at radius sqrt((k + 0.5) / N),
+// `samples` stratified points (a sunflower: point k at radius sqrt((k + 0.5) / N),
 // angle k times the golden angle, so every ring of equal area holds its share of points).
 // The probe can miss a blocker that covers only a sliver of the rim between two rim probes
 // (at most 1.2 % of the disc, where an edge cuts a 45-degree chord) or that fits between
 // the probes without touching any (a pole much thinner than the disc, seen end-on).
-double discVisibleFraction(const Bvh& bvh, const ActiveBeam& ab, const glm::vec3& x, const ReferenceOptions& o) {
+double discVisibleFraction(const Bvh& bvh, const ActiveBeam& ab, const glm::vec3& x, int samples,
+                           const ReferenceOptions& o) {
   const BeamPose& pose = ab.beam->pose;
   const float radius = ab.discRadiusM;
   if (o.lensDiscProbe) {
@@ -108,7 +109,7 @@ double discVisibleFraction(const Bvh& bvh, const ActiveBeam& ab, const glm::vec3
       agree = segmentClear(bvh, discPoint(pose, radius, 1.0f, k * (kPi / 4.0f)), x, o) == centre;
     if (agree) return centre ? 1.0 : 0.0;
   }
-  const int n = std::max(o.lensDiscSamples, 1);
+  const int n = std::max(samples, 1);
   constexpr float kGoldenAngle = 2.39996322972865332f;
   int clear = 0;
   for (int k = 0; k < n; ++k) {
@@ -203,7 +204,7 @@ glm::vec3 inScatterOneBeam(const Bvh& bvh, const MediumState& medium, const Acti
     glm::vec3 x, w;
     float r;
     pointAt(phi, x, w, r);
-    return discVisibleFraction(bvh, ab, x, o);
+    return discVisibleFraction(bvh, ab, x, o.lensDiscSamples, o);
   };
   const bool soft = ab.discRadiusM > 0.0f;
   double fracPrev = soft ? fractionAt(phi0) : 1.0;
@@ -288,7 +289,8 @@ glm::vec3 shadeSurface(const Bvh& bvh, const FrameState& frame, const std::vecto
     double vis = 1.0;
     if (ab.discRadiusM > 0.0f) {
       // The segments end kShadowEndGapM short of x: aim that far past the lifted point.
-      vis = discVisibleFraction(bvh, ab, lifted + glm::normalize(lifted - lens) * kShadowEndGapM, o);
+      vis = discVisibleFraction(bvh, ab, lifted + glm::normalize(lifted - lens) * kShadowEndGapM,
+                                o.surfaceDiscSamples, o);
       if (!(vis > 0.0)) continue;
     } else {
       const glm::vec3 d = lifted - lens;

@@ -33,8 +33,10 @@ struct ReferenceOptions {
   // plane, or a fixture's own housing in the venue). 0 = every triangle counts.
   float lensClearanceM = 0.0f;
   // Soft shadows (FrameState::softShadows): V(x) is the fraction of the lens disc seen from x,
-  // counted over this many stratified points of the disc (docs/reference.md, "Soft shadows").
+  // counted over this many stratified points of the disc (docs/reference.md, "Soft shadows"):
+  // in the haze, where the march averages V over many steps, and on surfaces, one V per pixel.
   int lensDiscSamples = 64;
+  int surfaceDiscSamples = 256;
   // Test the centre and eight rim points first and sample the whole disc only where they
   // disagree (the penumbra); false: always the whole disc.
   bool lensDiscProbe = true;

@@ -30,27 +30,28 @@ constexpr float kLensHeightM = 7.0f;
 const glm::vec3 kSphereCentre{0.0f, 4.0f, 0.0f};
 constexpr float kSphereRadiusM = 0.5f;
 
-Venue sphereVenue(bool withSphere) {
+Venue sphereVenue(bool withSphere, glm::vec3 centre = kSphereCentre, float radiusM = kSphereRadiusM) {
   Venue venue = floorVenue(16.0f, 0.4f);
-  if (withSphere) addSphere(venue, kSphereCentre, kSphereRadiusM, 96, 48);
+  if (withSphere) addSphere(venue, centre, radiusM, 96, 48);
   return venue;
 }
 
-FrameState spotFrame(bool soft) {
+FrameState spotFrame(float beamDeg, float fieldDeg) {
   FrameState frame;
-  frame.softShadows = soft;
+  frame.softShadows = true;
   frame.medium.scattering = 0.05f;
-  // Wide enough that the shadow's edge (about 10 degrees off the axis) lies where I_eff is flat.
-  frame.beams.push_back(makeBeam({0.0f, kLensHeightM, 0.0f}, {0.0f, -1.0f, 0.0f}, 40.0f, 50.0f, 50000.0f));
+  frame.beams.push_back(makeBeam({0.0f, kLensHeightM, 0.0f}, {0.0f, -1.0f, 0.0f}, beamDeg, fieldDeg, 50000.0f));
   frame.beams.back().optics.lensRadiusM = kLensRadiusM;
   return frame;
 }
 
-// The reference's options: HAZE_TEST_DISC_SAMPLES and HAZE_TEST_DISC_PROBE=0 measure its
+// The reference's options: HAZE_TEST_DISC_SAMPLES, HAZE_TEST_SURFACE_DISC_SAMPLES and
+// HAZE_TEST_DISC_PROBE=0 measure its
 // convergence (docs/reference.md, "Soft shadows").
 ReferenceOptions referenceOptions() {
   ReferenceOptions o;
   if (const char* n = std::getenv("HAZE_TEST_DISC_SAMPLES")) o.lensDiscSamples = std::atoi(n);
+  if (const char* n = std::getenv("HAZE_TEST_SURFACE_DISC_SAMPLES")) o.surfaceDiscSamples = std::atoi(n);
   if (const char* p = std::getenv("HAZE_TEST_DISC_PROBE")) o.lensDiscProbe = std::atoi(p) != 0;
   return o;
 }
@@ -80,8 +81,10 @@ class SoftShadow : public GlTest {};
 // umbra (high up) and the penumbra again. Limits: the measured errors (docs/rendering.md,
 // "Soft shadows") with a margin, within the 5 % at high and 10 % at default.
 TEST_F(SoftShadow, ShaftPenumbraInHazeMatchesTheReference) {
-  const Venue venue = sphereVenue(true);
-  FrameState frame = spotFrame(true);
+  // The sphere 1.5 m below the lens (its shadow 11.5 degrees off the axis, the penumbra about
+  // 3 degrees wide at the floor), so that the penumbra takes a good part of each chord.
+  const Venue venue = sphereVenue(true, {0.0f, 5.5f, 0.0f}, 0.3f);
+  FrameState frame = spotFrame(30.0f, 40.0f);
   frame.camera.position = {9.0f, 3.0f, 0.0f};
   frame.camera.target = {0.0f, 3.0f, 0.0f};
   frame.camera.fovYDeg = 50.0f;
@@ -94,7 +97,12 @@ TEST_F(SoftShadow, ShaftPenumbraInHazeMatchesTheReference) {
     const char* label;
     double core, wide, penumbra;
   };
-  for (const Case& c : {Case{Quality::High, "high", 0.03, 0.03, 0.05}, Case{Quality::Default, "default", 0.06, 0.06, 0.10}}) {
+  // Measured on llvmpipe (cores / wide / penumbra): high 0.0110 / 0.0237 / 0.0197, default
+  // 0.0248 / 0.0324 / 0.0391; the limits are those times 1.5. Hard shadows measured against the
+  // same reference: high 0.0227 / 0.0326 / 0.0451, default 0.0521 / 0.0519 / 0.0893, each failing
+  // at least the cores' and the penumbra's limits (checked below).
+  for (const Case& c : {Case{Quality::High, "high", 0.0165, 0.0356, 0.0296},
+                        Case{Quality::Default, "default", 0.0372, 0.0486, 0.0587}}) {
     auto r = Renderer::create(venue, renderSettingsFor(c.quality, kW, kH));
     ASSERT_TRUE(r.ok()) << r.error().str();
     const ImageRGB soft = gpuInScattered(**r, frame);
@@ -104,14 +112,14 @@ TEST_F(SoftShadow, ShaftPenumbraInHazeMatchesTheReference) {
     const auto s = compareBeams(soft, ref.inScattered);
     const auto h = compareBeams(hard, ref.inScattered);
     ASSERT_TRUE(s.ok() && h.ok());
-    // The penumbra: where the GPU's soft and hard images differ by more than 5 % (of the soft
-    // one) among the reference's lit values (above 1 % of its largest).
+    // The penumbra: where the GPU's soft and hard images differ by more than 2 % (of the
+    // reference) among the reference's lit values (above 1 % of its largest).
     float maxRef = 0.0f;
     for (const glm::vec3& p : ref.inScattered.pixels) maxRef = std::max(maxRef, p.g);
     std::vector<size_t> penumbra;
     for (size_t i = 0; i < soft.pixels.size(); ++i)
       if (ref.inScattered.pixels[i].g > 0.01f * maxRef &&
-          std::abs(soft.pixels[i].g - hard.pixels[i].g) > 0.05f * ref.inScattered.pixels[i].g)
+          std::abs(soft.pixels[i].g - hard.pixels[i].g) > 0.02f * ref.inScattered.pixels[i].g)
         penumbra.push_back(i);
     const double softPen = meanRelativeError(soft, ref.inScattered, penumbra);
     const double hardPen = meanRelativeError(hard, ref.inScattered, penumbra);
@@ -124,8 +132,15 @@ TEST_F(SoftShadow, ShaftPenumbraInHazeMatchesTheReference) {
     EXPECT_LT(s->coreError, c.core) << c.label;
     EXPECT_LT(s->wideError, c.wide) << c.label;
     EXPECT_LT(softPen, c.penumbra) << c.label << ": the penumbra";
-    // Teeth: hard shadows against the soft reference fail the penumbra's limit by far.
-    EXPECT_GT(hardPen, 2.0 * c.penumbra) << c.label << ": hard shadows pass for soft ones";
+    // Teeth: hard shadows against the soft reference fail the same limits.
+    EXPECT_GT(h->coreError, c.core) << c.label << ": hard shadows pass the cores' limit";
+    EXPECT_GT(hardPen, c.penumbra) << c.label << ": hard shadows pass the penumbra's limit";
+    // And so does the soft image made 10 % brighter.
+    ImageRGB brighter = soft;
+    for (glm::vec3& p : brighter.pixels) p *= 1.1f;
+    const auto b = compareBeams(brighter, ref.inScattered);
+    ASSERT_TRUE(b.ok());
+    EXPECT_GT(b->coreError, c.core) << c.label << ": the limits pass the image scaled by 1.1";
     if (HasFailure() || std::getenv("HAZE_TEST_IMAGES")) {
       for (const auto& f : writeDiagnostics(std::string("soft_shaft_") + c.label, soft, ref.inScattered))
         std::printf("[ soft_shaft_%s ] wrote %s\n", c.label, f.c_str());
@@ -158,7 +173,8 @@ double crossing(const std::vector<double>& v, double level) {
 // over the image without it. The penumbra runs from the umbra's edge (the line from the near
 // rim of the lens grazing the sphere) to its outer edge (from the far rim), similar triangles.
 TEST_F(SoftShadow, FloorPenumbraHasTheWidthOfSimilarTriangles) {
-  FrameState frame = spotFrame(true);
+  // Wide enough that the shadow's edge (about 10 degrees off the axis) lies where I_eff is flat.
+  FrameState frame = spotFrame(40.0f, 50.0f);
   frame.medium.scattering = 0.0f;
   constexpr float kCameraHeightM = 3.2f, kFovDeg = 60.0f;
   frame.camera.position = {0.0f, kCameraHeightM, 0.0f};
@@ -229,7 +245,9 @@ TEST_F(SoftShadow, FloorPenumbraHasTheWidthOfSimilarTriangles) {
       }
     std::printf("[ soft_floor_%s ] mean |V_gpu - V_ref| over %d penumbra pixels: %.4f\n", label, n, n ? err / n : 0.0);
     EXPECT_GE(n, 8);
-    EXPECT_LT(err / std::max(n, 1), 0.05) << label;
+    // Measured 0.0389 at high and 0.0385 at default (the PCSS blocker depth is a mean over a curved
+    // blocker); the limit is 1.5 times that.
+    EXPECT_LT(err / std::max(n, 1), 0.062) << label;
   }
 }
 

@@ -116,6 +116,27 @@ TEST(ShowIo, CueTimecodeRoundTripsAndIsWrittenOnlyWhenSet) {
   EXPECT_EQ(b.show.cueLists[0].cues[1].timecode, "");
 }
 
+// atmosphere.shadows: soft unless the show says hard, written only when hard (docs/show-format.md).
+TEST(ShowIo, ShadowsAreSoftByDefaultAndHardRoundTrips) {
+  auto a = loadShow(validShowPath());
+  ASSERT_TRUE(a.ok());
+  EXPECT_TRUE(a->atmosphere.softShadows);
+  EXPECT_EQ(showToText(*a).find("shadows"), std::string::npos);
+  a->atmosphere.softShadows = false;
+  const std::string text = showToText(*a);
+  EXPECT_NE(text.find("\"shadows\": \"hard\""), std::string::npos);
+  ShowParse b = parseShowText(text, validShowPath());
+  ASSERT_TRUE(b.problems.empty()) << b.problems[0].str();
+  EXPECT_FALSE(b.show.atmosphere.softShadows);
+  EXPECT_EQ(showToText(b.show), text);
+  std::string bad = text;
+  bad.replace(bad.find("\"hard\""), 6, "\"fuzzy\"");
+  ShowParse c = parseShowText(bad, validShowPath());
+  ASSERT_EQ(c.problems.size(), 1u);
+  EXPECT_EQ(c.problems[0].place, "/atmosphere/shadows");
+  EXPECT_EQ(c.problems[0].message, "unknown shadow kind \"fuzzy\"; expected soft or hard");
+}
+
 TEST(ShowIo, WrittenTextIsDiffable) {
   auto a = loadShow(validShowPath());
   ASSERT_TRUE(a.ok());
