@@ -1,5 +1,5 @@
 // The atmosphere tab: scattering, absorption, phase function (and g for Henyey-Greenstein),
-// ambient light (docs/physics.md), each a setAtmosphere command (a drag is one undo step); the
+// ambient light, soft or hard shadows (docs/physics.md), each a setAtmosphere command (a drag is one undo step); the
 // density field (docs/shows.md, "Density"): base, ground fog, air flow and hazers; and the
 // view's render quality, exposure and bloom, which are not part of the show.
 #include <algorithm>
@@ -149,6 +149,15 @@ void drawAtmosphereTab(Gui& gui) {
   }
   ImGui::SetNextItemWidth(160);
   track(ImGui::DragFloat3("Ambient", &a.ambient.x, 0.005f, 0.0f, 10.0f, "%.2f"));
+  // Soft: shadows softened by each lens disc; hard: point lights (docs/physics.md, "Soft shadows").
+  int shadows = a.softShadows ? 0 : 1;
+  const char* shadowKinds[] = {"soft", "hard"};
+  ImGui::SetNextItemWidth(110);
+  if (ImGui::Combo("Shadows", &shadows, shadowKinds, 2)) {
+    a.softShadows = shadows == 0;
+    changed = true;
+    item = ImGui::GetItemID();
+  }
   if (changed) {
     a.scattering = std::max(a.scattering, 0.0f);
     a.absorption = std::max(a.absorption, 0.0f);
