@@ -149,15 +149,6 @@ void drawAtmosphereTab(Gui& gui) {
   }
   ImGui::SetNextItemWidth(160);
   track(ImGui::DragFloat3("Ambient", &a.ambient.x, 0.005f, 0.0f, 10.0f, "%.2f"));
-  // Soft: shadows softened by each lens disc; hard: point lights (docs/physics.md, "Soft shadows").
-  int shadows = a.softShadows ? 0 : 1;
-  const char* shadowKinds[] = {"soft", "hard"};
-  ImGui::SetNextItemWidth(110);
-  if (ImGui::Combo("Shadows", &shadows, shadowKinds, 2)) {
-    a.softShadows = shadows == 0;
-    changed = true;
-    item = ImGui::GetItemID();
-  }
   if (changed) {
     a.scattering = std::max(a.scattering, 0.0f);
     a.absorption = std::max(a.absorption, 0.0f);
@@ -165,6 +156,17 @@ void drawAtmosphereTab(Gui& gui) {
     if (!s) gui.say(s.error().str(), true);
   }
   drawDensity(gui);
+  // Soft: shadows softened by each lens disc; hard: point lights (docs/physics.md, "Soft
+  // shadows"). Below the density, so the rows above keep their places.
+  AtmosphereDef withShadows = doc.show().atmosphere;
+  int shadows = withShadows.softShadows ? 0 : 1;
+  const char* shadowKinds[] = {"soft", "hard"};
+  ImGui::SetNextItemWidth(110);
+  if (ImGui::Combo("Shadows", &shadows, shadowKinds, 2)) {
+    withShadows.softShadows = shadows == 0;
+    Status s = doc.run(setAtmosphere(withShadows), false);
+    if (!s) gui.say(s.error().str(), true);
+  }
 
   ImGui::Separator();
   ImGui::TextUnformatted("View (not saved in the show)");
