@@ -103,6 +103,12 @@ double discVisibleFraction(const Bvh& bvh, const ActiveBeam& ab, const glm::vec3
   const BeamPose& pose = ab.beam->pose;
   const float radius = ab.discRadiusM;
   if (o.lensDiscProbe) {
+    // Every point of the cone from x to the disc lies within r_lens of the segment from x to
+    // the centre: with no triangle that near, the whole disc is seen (exact, and one traversal
+    // instead of nine rays where the haze is far from everything).
+    const glm::vec3 d = x - pose.lensPosition;
+    const float len = glm::length(d);
+    if (len > 0.0f && !bvh.mayComeNear(pose.lensPosition, d / len, 0.0f, len, radius)) return 1.0;
     const bool centre = segmentClear(bvh, pose.lensPosition, x, o);
     bool agree = true;
     for (int k = 0; k < 8 && agree; ++k)

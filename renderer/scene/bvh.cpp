@@ -254,6 +254,40 @@ bool Bvh::anyHit(const glm::vec3& origin, const glm::vec3& dir, float tMinM, flo
   return traverse<true>(origin, dir, tMinM, tMaxM).hit();
 }
 
+bool Bvh::mayComeNear(const glm::vec3& origin, const glm::vec3& dir, float tMinM, float tMaxM,
+                      float radiusM) const {
+  if (tris_.empty()) return false;
+  if (!(tMaxM >= tMinM) || !finite(origin) || !finite(dir) || !(radiusM >= 0.0f) || !std::isfinite(radiusM))
+    return true;  // nothing promised
+  glm::vec3 inv;
+  for (int a = 0; a < 3; ++a) {
+    const float d = dir[a];
+    inv[a] = std::fabs(d) > 1e-30f ? 1.0f / d : (std::signbit(d) ? -1e30f : 1e30f);
+  }
+  const glm::vec3 grow(radiusM);
+  std::array<uint32_t, kStackSize> stack;
+  int top = 0;
+  float enter;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!hitBox(node.lo - grow, node.hi + grow, origin, inv, tMinM, tMaxM, enter)) continue;
+    if (node.count == 0) {
+      stack[top++] = node.first;
+      stack[top++] = node.first + 1;
+      continue;
+    }
+    for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+      const Tri& tri = tris_[i];
+      const glm::vec3 v1 = tri.v0 + tri.e1, v2 = tri.v0 + tri.e2;
+      const glm::vec3 lo = glm::min(tri.v0, glm::min(v1, v2)) - grow;
+      const glm::vec3 hi = glm::max(tri.v0, glm::max(v1, v2)) + grow;
+      if (hitBox(lo, hi, origin, inv, tMinM, tMaxM, enter)) return true;
+    }
+  }
+  return false;
+}
+
 SurfacePoint Bvh::surfaceAt(const RayHit& hit) const {
   assert(hit.hit() && "Bvh::surfaceAt needs a hit: check RayHit::hit() first");
   const Primitive& prim = venue_->primitives[static_cast<size_t>(hit.primitive)];

@@ -44,6 +44,10 @@ class Bvh {
   RayHit closestHit(const glm::vec3& origin, const glm::vec3& dir, float tMinM, float tMaxM) const;
   // Whether any triangle lies with tMinM < t < tMaxM; stops at the first one found.
   bool anyHit(const glm::vec3& origin, const glm::vec3& dir, float tMinM, float tMaxM) const;
+  // Conservatively, whether any triangle may come within radiusM of the segment
+  // origin + t * dir, tMinM <= t <= tMaxM: false promises that none does (the segment against
+  // node and triangle boxes grown by radiusM); true may be a box's corner only.
+  bool mayComeNear(const glm::vec3& origin, const glm::vec3& dir, float tMinM, float tMaxM, float radiusM) const;
 
   SurfacePoint surfaceAt(const RayHit& hit) const;
 

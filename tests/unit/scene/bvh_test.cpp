@@ -112,6 +112,21 @@ TEST(Bvh, RaysThroughSharedEdgesNeverSlipThrough) {
   }
 }
 
+// mayComeNear (the reference's soft-shadow early out): false only when no triangle is within
+// the radius of the segment; a segment 0.1 m above a floor is near at 0.15 m, not at 0.05 m,
+// and one that ends 0.1 m short of the floor's edge is near only past 0.1 m.
+TEST(Bvh, MayComeNearSeesTrianglesWithinTheRadiusOfASegment) {
+  Venue v = emptyVenue();
+  addFloor(v, 0.0f, 1.0f);  // |x|, |z| <= 1 at y = 0
+  const Bvh bvh(v);
+  EXPECT_FALSE(bvh.mayComeNear({-0.5f, 0.1f, 0.0f}, {1, 0, 0}, 0.0f, 1.0f, 0.05f));
+  EXPECT_TRUE(bvh.mayComeNear({-0.5f, 0.1f, 0.0f}, {1, 0, 0}, 0.0f, 1.0f, 0.15f));
+  EXPECT_FALSE(bvh.mayComeNear({1.1f, -0.5f, 0.0f}, {0, 1, 0}, 0.0f, 1.0f, 0.09f));  // beside the edge
+  EXPECT_TRUE(bvh.mayComeNear({1.1f, -0.5f, 0.0f}, {0, 1, 0}, 0.0f, 1.0f, 0.11f));
+  EXPECT_FALSE(bvh.mayComeNear({0.0f, 0.5f, 0.0f}, {0, 1, 0}, 0.0f, 1.0f, 0.4f));  // above it, short
+  EXPECT_TRUE(bvh.mayComeNear({0.0f, 0.5f, 0.0f}, {0, 1, 0}, -1.0f, 1.0f, 0.0f));  // through it
+}
+
 TEST(Bvh, BackFacesAreHitAndGeometryIsReported) {
   Venue v = emptyVenue();
   addFloor(v, 1.0f, 2.0f);  // faces up
