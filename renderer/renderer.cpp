@@ -16,6 +16,7 @@
 #include "renderer/gpu_bodies.h"
 #include "renderer/gpu_venue.h"
 #include "renderer/light_tiles.h"
+#include "renderer/sun_pass.h"
 #include "renderer/scene/camera_basis.h"
 #include "shaders/interface.h"
 
@@ -62,6 +63,7 @@ struct Renderer::Impl {
   // The radiance target without its depth, for passes that read the scene depth as a texture.
   gl::Framebuffer radianceOnlyFbo{"radiance_only_fbo"};
   BeamPass beamPass;
+  SunPass sun;
   LightTiles tiles;
   gl::VertexArray emptyVao{"fullscreen_vao"};
   // Shadow maps, surfaces, beams; used only with RenderSettings::timePasses.
@@ -133,6 +135,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
                                 .lattice = settings.lattice});
   if (!pass) return pass.error();
   impl->beamPass = std::move(*pass);
+  auto sun = SunPass::create({.mapSize = settings.sunMapSize, .steps = settings.sunSteps});
+  if (!sun) return sun.error();
+  impl->sun = std::move(*sun);
   auto tiles = LightTiles::create(settings.width, settings.height);
   if (!tiles) return tiles.error();
   impl->tiles = std::move(*tiles);
@@ -168,6 +173,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   };
   begin(0);
   BeamUpdateStats stats = m.beams.update(frame, m.venue, m.shadowProgram);
+  times_.sunMapRendered = m.sun.update(frame, m.venue, m.shadowProgram);
   end();
   times_.shadowMapsRendered = stats.shadowMapsRendered;
   times_.lightMapsBaked = stats.lightMapsBaked;
@@ -178,6 +184,9 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     warnings_.push_back(fixtureList(std::move(stats.notDrawn)) + " not drawn (" +
                         std::to_string(frame.beams.size() - static_cast<size_t>(m.beams.drawnCount())) + " of " +
                         std::to_string(frame.beams.size()) + " beams): " + stats.notDrawnReason);
+  if (m.sun.lit() && frame.medium.density && frame.medium.scattering > 0.0f)
+    warnings_.push_back("the sun's in-scattering takes the medium as uniform (D = 1) on the GPU; "
+                        "the density field is not applied to the sun (render with --quality reference for it)");
 
   begin(1);
   const int w = settings_.width, h = settings_.height;
@@ -232,6 +241,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glProgramUniform1i(prog, HAZE_LOC_SURFACE_TILE_COLUMNS, tiled ? m.tiles.columns() : 0);
   glProgramUniform1i(prog, HAZE_LOC_SURFACE_MASK_WORDS, m.tiles.maskWords());
   m.density.bind(prog);
+  m.sun.bind(prog);
   m.venue.bind();
   for (const GpuVenue::Draw& d : m.venue.draws()) {
     const GpuVenue::GpuMaterial& mat = m.venue.materials()[static_cast<size_t>(d.material)];
@@ -283,7 +293,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
 
   begin(2);
   times_.planeFragments =
-      m.beamPass.render(frame, m.beams, m.density, m.depth.id(), m.radianceOnlyFbo.id(), accumulate);
+      m.beamPass.render(frame, m.beams, m.density, m.depth.id(), m.radianceOnlyFbo.id(), accumulate, &m.sun);
   end();
   times_.accumulatedFrames = m.beamPass.accumulatedFrames();
   times_.beamsDrawn = m.beamPass.beamsDrawn();

@@ -38,6 +38,18 @@ struct CameraDef {
   float farM = 100.0f;
 };
 
+// The sun (docs/physics.md, "The sun"): a directional light over the whole venue, entering a
+// closed room only through its openings. Azimuth from north (-Z) towards east (+X), seen from
+// above; elevation above the horizon (the XZ plane).
+struct SunDef {
+  bool enabled = true;
+  float azimuthDeg = 180.0f;
+  float elevationDeg = 45.0f;
+  float illuminanceLux = 10000.0f;  // on a plane perpendicular to the sun's direction
+  glm::vec3 color{1.0f};            // linear RGB filter
+  bool operator==(const SunDef&) const = default;
+};
+
 struct AtmosphereDef {
   float scattering = 0.0f;      // sigma_s [1/m]
   float absorption = 0.0f;      // sigma_a [1/m]
@@ -47,6 +59,7 @@ struct AtmosphereDef {
   glm::vec3 background{0.0f};   // number or [r, g, b] in the file; 0 unless the show sets one
   // The density field D(x) (docs/shows.md, "Density"); none: D = 1 everywhere.
   std::optional<DensitySpec> density;
+  std::optional<SunDef> sun;  // none: no sun
 };
 
 struct Patch {

@@ -32,6 +32,9 @@ struct ReferenceOptions {
   // Geometry closer than this to a beam's lens casts no shadow (the GPU's shadow-map near
   // plane, or a fixture's own housing in the venue). 0 = every triangle counts.
   float lensClearanceM = 0.0f;
+  // The sun's in-scattering is marched in steps of at most this length along the eye ray
+  // (its integrand is smooth but for shadow edges, which are bisected).
+  float sunStepM = 0.02f;
   // Worker threads; 0 = one per hardware thread.
   int threads = 0;
   // Called on the calling thread after each row it finishes, with the rows done by all threads

@@ -1,0 +1,115 @@
+#include "renderer/sun_pass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "renderer/camera_uniforms.h"
+#include "renderer/gl/program.h"
+#include "shaders/interface.h"
+
+namespace haze {
+namespace {
+
+// World to the map's clip space: looking along the sun's direction, the box's eight corners
+// fitted tightly in x and y, with a margin in depth so no corner sits on a clip plane.
+glm::mat4 sunViewProjection(const glm::vec3& d, const glm::vec3& lo, const glm::vec3& hi) {
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  const float radius = std::max(0.5f * glm::length(hi - lo), 0.01f);
+  const glm::vec3 up = std::fabs(d.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+  const glm::mat4 view = glm::lookAt(centre - d * (2.0f * radius), centre, up);
+  glm::vec3 vmin(1e30f), vmax(-1e30f);
+  for (int c = 0; c < 8; ++c) {
+    const glm::vec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+    const glm::vec3 p = glm::vec3(view * glm::vec4(corner, 1.0f));
+    vmin = glm::min(vmin, p);
+    vmax = glm::max(vmax, p);
+  }
+  const float pad = 0.01f * radius + 1e-3f;  // a venue that is a flat floor still has extent
+  // View space looks down -z: near and far are distances, -vmax.z and -vmin.z.
+  return glm::ortho(vmin.x - pad, vmax.x + pad, vmin.y - pad, vmax.y + pad, -vmax.z - pad, -vmin.z + pad) * view;
+}
+
+}  // namespace
+
+Result<SunPass> SunPass::create(const SunPassSettings& settings) {
+  SunPass p;
+  p.settings_ = settings;
+  p.settings_.mapSize = std::clamp(settings.mapSize, 64, 8192);
+  p.settings_.steps = std::clamp(settings.steps, 1, 4096);
+  auto scatter = gl::buildProgram({.label = "sun_scatter", .vertex = "fullscreen.vert.glsl",
+                                   .fragment = "sun_scatter.frag.glsl"});
+  if (!scatter) return scatter.error();
+  p.scatter_ = std::move(*scatter);
+  p.fbo_ = gl::Framebuffer("sun_shadow_fbo");
+  return p;
+}
+
+bool SunPass::update(const FrameState& frame, const GpuVenue& venue, const gl::Program& depthProgram) {
+  sun_ = frame.sun;
+  lit_ = frame.sun.lit();
+  if (!lit_) return false;
+  boxMin_ = venue.boundsMin();
+  boxMax_ = venue.boundsMax();
+  if (haveMap_ && mapDirection_ == frame.sun.direction) return false;
+  if (!map_) {  // made on the first lit frame: a show without a sun never allocates it
+    map_ = gl::Texture(GL_TEXTURE_2D, "sun_shadow_map");
+    glTextureStorage2D(map_.id(), 1, GL_DEPTH_COMPONENT32F, settings_.mapSize, settings_.mapSize);
+    glTextureParameteri(map_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(map_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(map_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(map_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(map_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(map_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, map_.id(), 0);
+    glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
+  }
+  viewProj_ = sunViewProjection(frame.sun.direction, boxMin_, boxMax_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, settings_.mapSize, settings_.mapSize);
+  const float one = 1.0f;
+  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+  glUseProgram(depthProgram.id());
+  glProgramUniformMatrix4fv(depthProgram.id(), HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj_));
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // two-sided surfaces
+  // Slope-scaled, as the beams' maps: lit surfaces do not shadow themselves at grazing sun.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.5f, 2.0f);
+  venue.bind();
+  venue.drawAll();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  haveMap_ = true;
+  mapDirection_ = frame.sun.direction;
+  return true;
+}
+
+void SunPass::bind(GLuint prog) const {
+  glProgramUniform1i(prog, HAZE_LOC_SUN_ON, lit_ ? 1 : 0);
+  if (!lit_) return;
+  glProgramUniform3fv(prog, HAZE_LOC_SUN_DIRECTION, 1, glm::value_ptr(sun_.direction));
+  glProgramUniform3fv(prog, HAZE_LOC_SUN_ILLUMINANCE, 1, glm::value_ptr(sun_.illuminance));
+  glProgramUniformMatrix4fv(prog, HAZE_LOC_SUN_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj_));
+  glProgramUniform3fv(prog, HAZE_LOC_SUN_BOX_MIN, 1, glm::value_ptr(boxMin_));
+  glProgramUniform3fv(prog, HAZE_LOC_SUN_BOX_MAX, 1, glm::value_ptr(boxMax_));
+  glBindTextureUnit(HAZE_UNIT_SUN_SHADOW, map_.id());
+}
+
+void SunPass::drawScatter(const FrameState& frame, float aspect, float frameJitter) const {
+  if (!lit_ || !(frame.medium.scattering > 0.0f)) return;
+  const GLuint prog = scatter_.id();
+  glUseProgram(prog);
+  setCameraUniforms(prog, frame.camera, aspect);
+  glProgramUniform1i(prog, HAZE_LOC_PHASE, static_cast<int>(frame.medium.phase));
+  glProgramUniform1f(prog, HAZE_LOC_PHASE_G, frame.medium.g);
+  glProgramUniform4f(prog, HAZE_LOC_SUN_MARCH, frame.medium.scattering, frame.medium.extinction(),
+                     static_cast<float>(settings_.steps), frameJitter);
+  bind(prog);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace haze
