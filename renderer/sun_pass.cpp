@@ -77,12 +77,12 @@ bool SunPass::update(const FrameState& frame, const GpuVenue& venue, const gl::P
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // two-sided surfaces
-  // Slope-scaled, as the beams' maps: lit surfaces do not shadow themselves at grazing sun.
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(1.5f, 2.0f);
+  // No polygon offset, unlike the beams' maps: an offset leaves a layer of air in front of
+  // every surface that the map calls lit (a speckle of light on walls the sun never reaches,
+  // from the march's last samples). Surfaces keep off their own depth by the normal offset in
+  // sunIrradiance instead.
   venue.bind();
   venue.drawAll();
-  glDisable(GL_POLYGON_OFFSET_FILL);
   haveMap_ = true;
   mapDirection_ = frame.sun.direction;
   return true;

@@ -18,7 +18,12 @@ void main() {
   vec3 ray = eyeRay(vUv * 2.0 - 1.0);
   float len = length(ray);
   vec3 v = ray / len;
-  vec2 chord = sunBoxChord(uEye, v, sceneViewDepth(vUv) * len);
+  // The march stops a texel of the shadow map short of the scene: the map's PCF tap a texel
+  // around a sample just in front of a wall the sun never reaches reads texels of neighbouring
+  // surfaces, a speckle of light on that wall.
+  float mapWidthM = 2.0 / length(vec3(uSunViewProj[0][0], uSunViewProj[1][0], uSunViewProj[2][0]));
+  float gapM = mapWidthM / float(textureSize(uSunShadow, 0).x);
+  vec2 chord = sunBoxChord(uEye, v, sceneViewDepth(vUv) * len - gapM);
   if (!(chord.y > chord.x)) {
     outAdd = vec4(0.0);
     return;

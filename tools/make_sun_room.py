@@ -54,7 +54,7 @@ def walls():
 def main(out):
     floor = [[(X0, 0, Z0), (X1, 0, Z0), (X1, 0, Z1), (X0, 0, Z1)]]
     parts = [("walls", walls(), 0), ("floor", floor, 1),
-             ("plinth", box((0.2, 0.0, -0.6), (1.4, 0.9, 0.6)) + box((2.6, 0.0, 1.2), (3.0, 2.2, 1.6)), 2)]
+             ("plinth", box((-2.2, 0.0, -0.5), (-1.2, 0.9, 0.5)) + box((2.6, 0.0, 1.2), (3.0, 2.2, 1.6)), 2)]
     blob = b""
     accessors, views, prims = [], [], []
     for name, quads, material in parts:

@@ -155,9 +155,10 @@ void check(const std::string& name, const Venue& venue, const ReferenceImages& r
 TEST_F(SunRender, AShaftThroughAWindowMatchesTheReference) {
   const Venue venue = windowRoom();
   const ReferenceImages ref = reference(venue, sunFrame(270.0f, 30.0f));
-  // Measured (L_in cores / wide / sunlit surfaces): high 0.81 % / 0.82 % / 0.51 %, default
-  // 5.13 % / 5.26 % / 1.09 % (64 steps and one frame: noise across the shaft's edges). The
-  // limits are those times about 1.5, rounded up; the sun 3 degrees off measures 27 % / 6 %.
+  // Measured (L_in cores / wide / sunlit surfaces): high 0.78 % / 0.80 % / 0.51 %, default
+  // 5.03 % / 5.16 % / 1.09 % (64 steps and one frame: noise across the shaft's edges). The
+  // limits are those times about 1.5, rounded up; the sun 3 degrees off measures 27 % / 6 %,
+  // and the shaft 10 % brighter fails them too.
   check("sun_window_high", venue, ref, Quality::High, 0.013, 0.013, 0.008);
   check("sun_window_default", venue, ref, Quality::Default, 0.077, 0.079, 0.017);
 }
