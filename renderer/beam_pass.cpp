@@ -171,7 +171,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
     glBindFramebuffer(GL_FRAMEBUFFER, scatterFbo_.id());
     glViewport(0, 0, lowW_, lowH_);
     fragments += drawBeams(planes_.id(), jitter, frame, footprints, lowW_, lowH_);
-    if (sun) sun->drawScatter(frame, aspect, jitter);
+    if (sun) sun->drawScatter(frame, aspect, jitter, density);
     if (refining()) {
       // The mask follows the first frame of an accumulation and is kept for the rest, so that
       // every refined pixel averages the same frames.
@@ -182,7 +182,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
       glStencilFunc(GL_EQUAL, 1, 0xFF);
       glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
       drawBeams(planesFine_.id(), jitter, frame, footprints, width_, height_);
-      if (sun) sun->drawScatter(frame, aspect, jitter);
+      if (sun) sun->drawScatter(frame, aspect, jitter, density);
       glDisable(GL_STENCIL_TEST);
     }
     ++accumulated_;

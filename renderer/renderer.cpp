@@ -184,9 +184,6 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     warnings_.push_back(fixtureList(std::move(stats.notDrawn)) + " not drawn (" +
                         std::to_string(frame.beams.size() - static_cast<size_t>(m.beams.drawnCount())) + " of " +
                         std::to_string(frame.beams.size()) + " beams): " + stats.notDrawnReason);
-  if (m.sun.lit() && frame.medium.density && frame.medium.scattering > 0.0f)
-    warnings_.push_back("the sun's in-scattering takes the medium as uniform (D = 1) on the GPU; "
-                        "the density field is not applied to the sun (render with --quality reference for it)");
 
   begin(1);
   const int w = settings_.width, h = settings_.height;

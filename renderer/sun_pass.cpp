@@ -9,6 +9,7 @@
 
 #include "renderer/camera_uniforms.h"
 #include "renderer/gl/program.h"
+#include "renderer/scene/physics.h"
 #include "shaders/interface.h"
 
 namespace haze {
@@ -48,12 +49,53 @@ Result<SunPass> SunPass::create(const SunPassSettings& settings) {
   return p;
 }
 
+// The sun's path map: at each cell centre of the density field's grid, the integral of D from
+// there towards the sun to the edge of the venue's box, on the CPU (the field's own integral).
+void SunPass::updatePath(const FrameState& frame) {
+  const DensityField* field = frame.medium.density.get();
+  if (!field || field->values.empty()) {
+    keepField_.reset();
+    pathField_ = nullptr;
+    return;
+  }
+  if (field == pathField_ && pathDirection_ == frame.sun.direction) return;
+  const int nx = field->nx, ny = field->ny, nz = field->nz;
+  std::vector<float> values(static_cast<size_t>(nx) * ny * nz);
+  const glm::vec3 cell = (field->maxM - field->minM) / glm::vec3(nx, ny, nz);
+  for (int z = 0; z < nz; ++z)
+    for (int y = 0; y < ny; ++y)
+      for (int x = 0; x < nx; ++x) {
+        const glm::vec3 c = field->minM + (glm::vec3(x, y, z) + 0.5f) * cell;
+        const float s = sunPathInBox(c, frame.sun.direction, boxMin_, boxMax_);
+        values[(static_cast<size_t>(z) * ny + y) * nx + x] = s > 0.0f ? field->integral(c, c - frame.sun.direction * s) : 0.0f;
+      }
+  int w = 0, h = 0, d = 0;
+  if (path_) {
+    glGetTextureLevelParameteriv(path_.id(), 0, GL_TEXTURE_WIDTH, &w);
+    glGetTextureLevelParameteriv(path_.id(), 0, GL_TEXTURE_HEIGHT, &h);
+    glGetTextureLevelParameteriv(path_.id(), 0, GL_TEXTURE_DEPTH, &d);
+  }
+  if (!path_ || w != nx || h != ny || d != nz) {
+    path_ = gl::Texture(GL_TEXTURE_3D, "sun_path");
+    glTextureStorage3D(path_.id(), 1, GL_R32F, nx, ny, nz);
+    glTextureParameteri(path_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(path_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+      glTextureParameteri(path_.id(), wrap, GL_CLAMP_TO_EDGE);
+  }
+  glTextureSubImage3D(path_.id(), 0, 0, 0, 0, nx, ny, nz, GL_RED, GL_FLOAT, values.data());
+  keepField_ = frame.medium.density;
+  pathField_ = field;
+  pathDirection_ = frame.sun.direction;
+}
+
 bool SunPass::update(const FrameState& frame, const GpuVenue& venue, const gl::Program& depthProgram) {
   sun_ = frame.sun;
   lit_ = frame.sun.lit();
   if (!lit_) return false;
   boxMin_ = venue.boundsMin();
   boxMax_ = venue.boundsMax();
+  updatePath(frame);
   if (haveMap_ && mapDirection_ == frame.sun.direction) return false;
   if (!map_) {  // made on the first lit frame: a show without a sun never allocates it
     map_ = gl::Texture(GL_TEXTURE_2D, "sun_shadow_map");
@@ -97,9 +139,11 @@ void SunPass::bind(GLuint prog) const {
   glProgramUniform3fv(prog, HAZE_LOC_SUN_BOX_MIN, 1, glm::value_ptr(boxMin_));
   glProgramUniform3fv(prog, HAZE_LOC_SUN_BOX_MAX, 1, glm::value_ptr(boxMax_));
   glBindTextureUnit(HAZE_UNIT_SUN_SHADOW, map_.id());
+  if (pathField_) glBindTextureUnit(HAZE_UNIT_SUN_PATH, path_.id());
 }
 
-void SunPass::drawScatter(const FrameState& frame, float aspect, float frameJitter) const {
+void SunPass::drawScatter(const FrameState& frame, float aspect, float frameJitter,
+                          const DensityResources& density) const {
   if (!lit_ || !(frame.medium.scattering > 0.0f)) return;
   const GLuint prog = scatter_.id();
   glUseProgram(prog);
@@ -108,6 +152,7 @@ void SunPass::drawScatter(const FrameState& frame, float aspect, float frameJitt
   glProgramUniform1f(prog, HAZE_LOC_PHASE_G, frame.medium.g);
   glProgramUniform4f(prog, HAZE_LOC_SUN_MARCH, frame.medium.scattering, frame.medium.extinction(),
                      static_cast<float>(settings_.steps), frameJitter);
+  density.bind(prog);
   bind(prog);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

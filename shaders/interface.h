@@ -35,7 +35,7 @@
 #define HAZE_UNIT_SCATTER_FINE 12   // composite.frag.glsl: full-resolution in-scattering where refined
 #define HAZE_UNIT_REFINE_MASK 13    // composite.frag.glsl: 1 where the pixel was refined
 #define HAZE_UNIT_SUN_SHADOW 15     // sun.glsl: depth seen from the sun (orthographic over the venue's box)
-// Unit 16 is kept for the sun.
+#define HAZE_UNIT_SUN_PATH 16       // sun.glsl: the integral of D towards the sun, over the density grid
 // No image units are used.
 
 // ---- Shader storage buffer bindings -------------------------------------------------------

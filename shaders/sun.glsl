@@ -1,6 +1,6 @@
 // The sun as the lighting shaders see it (docs/physics.md, "The sun"): a direction, c * E, an
 // orthographic shadow map over the venue's bounding box, and the box itself, which is the
-// medium the sun's light crosses (T_sun) and scatters in.
+// medium the sun's light crosses (T_sun) and scatters in. Include density.glsl before this.
 #include "interface.h"
 
 layout(location = HAZE_LOC_SUN_ON) uniform int uSunOn;
@@ -10,6 +10,9 @@ layout(location = HAZE_LOC_SUN_VIEW_PROJ) uniform mat4 uSunViewProj;
 layout(location = HAZE_LOC_SUN_BOX_MIN) uniform vec3 uSunBoxMin;
 layout(location = HAZE_LOC_SUN_BOX_MAX) uniform vec3 uSunBoxMax;
 layout(binding = HAZE_UNIT_SUN_SHADOW) uniform sampler2DShadow uSunShadow;
+// With a density field: at the centres of the field's cells, the integral of D from there
+// towards the sun to the box's edge (renderer/sun_pass.cpp), trilinear like D itself.
+layout(binding = HAZE_UNIT_SUN_PATH) uniform sampler3D uSunPath;
 
 // The length of the ray from x towards the sun inside the box; 0 from outside it.
 float sunPathInBox(vec3 x) {
@@ -18,6 +21,14 @@ float sunPathInBox(vec3 x) {
   vec3 safe = mix(vec3(1e-12), u, greaterThan(abs(u), vec3(1e-12)));
   vec3 exitT = max((uSunBoxMax - x) / safe, (uSunBoxMin - x) / safe);
   return max(min(exitT.x, min(exitT.y, exitT.z)), 0.0);
+}
+
+// The sun's optical path to x in metres of nominal medium: its length in the box, or through a
+// density field the integral of D along it.
+float sunPathTo(vec3 x) {
+  if (uDensityOn == 0) return sunPathInBox(x);
+  if (any(lessThan(x, uSunBoxMin)) || any(greaterThan(x, uSunBoxMax))) return 0.0;
+  return texture(uSunPath, (x - uDensityMin) * uDensityInvSize).r;
 }
 
 // The eye ray's chord [t0, t1] through the box, within [0, tMax]; t1 <= t0 when it misses.
@@ -59,5 +70,5 @@ vec3 sunIrradiance(vec3 x, vec3 n, float sigmaT) {
   float texelM = mapWidthM / float(textureSize(uSunShadow, 0).x);
   float slant = sqrt(max(1.0 - cosine * cosine, 0.0));
   float v = sunVisibility(x + n * max(0.002, 1.5 * texelM * slant / max(cosine, 0.2)));
-  return uSunIlluminance * (cosine * v * exp(-sigmaT * sunPathInBox(x)));
+  return uSunIlluminance * (cosine * v * exp(-sigmaT * sunPathTo(x)));
 }

@@ -1,10 +1,12 @@
 // The sun's in-scattering along each pixel's eye ray (docs/rendering.md, "The sun"): a march
 // over the ray's chord through the venue's box, up to the scene, in equal steps jittered per
-// pixel and per frame, each sample V_sun (the shadow map) times both transmittances. The phase
+// pixel and per frame, each sample V_sun (the shadow map) times both transmittances (through a
+// density field: D(x), the eye's path map and the sun's, shaders/density.glsl and sun.glsl). The phase
 // function is one value per ray (the sun's direction is the same everywhere). Added into the
 // beams' scattering buffer, so it shares their accumulation and depth-aware upsample.
 #include "camera.glsl"
 #include "phase.glsl"
+#include "density.glsl"
 #include "sun.glsl"
 
 in vec2 vUv;
@@ -36,7 +38,11 @@ void main() {
     float t = chord.x + (float(i) + xi) * dt;
     vec3 x = uEye + v * t;
     float vis = sunVisibilityVolume(x);
-    if (vis > 0.0) sum += vis * exp(-uMarch.y * (sunPathInBox(x) + t));
+    if (vis <= 0.0) continue;
+    if (uDensityOn == 0)
+      sum += vis * exp(-uMarch.y * (sunPathInBox(x) + t));
+    else  // sigma_s(x) = D(x) sigma_s, both paths integrals of D (docs/physics.md, section 9)
+      sum += vis * densityAt(x) * exp(-uMarch.y * (sunPathTo(x) + eyePathTo(x)));
   }
   outAdd = vec4(uSunIlluminance * (uMarch.x * phaseFunction(-dot(uSunDirection, v)) * sum * dt), 0.0);
 }
