@@ -117,6 +117,48 @@ void drawDensity(Gui& gui) {
   }
 }
 
+// The sun (docs/shows.md, "The sun"), below the density field so that the rows above keep
+// their places: switching it on for the first time adds the default sun.
+void drawSun(Gui& gui) {
+  ShowDocument& doc = *gui.doc;
+  AtmosphereDef a = doc.show().atmosphere;
+  bool changed = false;
+  ImGuiID item = 0;
+  auto track = [&](bool c) {
+    if (c) {
+      changed = true;
+      item = ImGui::GetItemID();
+    }
+  };
+  bool sunOn = a.sun && a.sun->enabled;
+  if (ImGui::Checkbox("Sun", &sunOn)) {
+    if (!a.sun) a.sun = SunDef{};
+    a.sun->enabled = sunOn;
+    changed = true;
+    item = ImGui::GetItemID();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Daylight: a directional light that enters the venue through its openings (docs/shows.md)");
+  if (a.sun && a.sun->enabled) {
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Azimuth deg", &a.sun->azimuthDeg, 0.5f, -360.0f, 360.0f, "%.1f"));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("From north (-Z) towards east (+X), seen from above");
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Elevation deg", &a.sun->elevationDeg, 0.25f, -90.0f, 90.0f, "%.1f"));
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Sun lux", &a.sun->illuminanceLux, 100.0f, 0.0f, 1e6f, "%.0f"));
+    ImGui::SetNextItemWidth(160);
+    track(ImGui::ColorEdit3("Sun colour", &a.sun->color.x, ImGuiColorEditFlags_Float));
+  }
+  if (!changed) return;
+  a.sun->azimuthDeg = std::clamp(a.sun->azimuthDeg, -360.0f, 360.0f);
+  a.sun->elevationDeg = std::clamp(a.sun->elevationDeg, -90.0f, 90.0f);
+  a.sun->illuminanceLux = std::clamp(a.sun->illuminanceLux, 0.0f, 1e6f);
+  a.sun->color = glm::clamp(a.sun->color, glm::vec3(0.0f), glm::vec3(1.0f));
+  Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
+  if (!s) gui.say(s.error().str(), true);
+}
+
 }  // namespace
 
 void drawAtmosphereTab(Gui& gui) {
@@ -151,40 +193,14 @@ void drawAtmosphereTab(Gui& gui) {
   }
   ImGui::SetNextItemWidth(160);
   track(ImGui::DragFloat3("Ambient", &a.ambient.x, 0.005f, 0.0f, 10.0f, "%.2f"));
-  // The sun (docs/shows.md, "The sun"): switching it on for the first time adds the default sun.
-  bool sunOn = a.sun && a.sun->enabled;
-  if (ImGui::Checkbox("Sun", &sunOn)) {
-    if (!a.sun) a.sun = SunDef{};
-    a.sun->enabled = sunOn;
-    changed = true;
-    item = ImGui::GetItemID();
-  }
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Daylight: a directional light that enters the venue through its openings (docs/shows.md)");
-  if (a.sun && a.sun->enabled) {
-    ImGui::SetNextItemWidth(110);
-    track(ImGui::DragFloat("Azimuth deg", &a.sun->azimuthDeg, 0.5f, -360.0f, 360.0f, "%.1f"));
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("From north (-Z) towards east (+X), seen from above");
-    ImGui::SetNextItemWidth(110);
-    track(ImGui::DragFloat("Elevation deg", &a.sun->elevationDeg, 0.25f, -90.0f, 90.0f, "%.1f"));
-    ImGui::SetNextItemWidth(110);
-    track(ImGui::DragFloat("Sun lux", &a.sun->illuminanceLux, 100.0f, 0.0f, 1e6f, "%.0f"));
-    ImGui::SetNextItemWidth(160);
-    track(ImGui::ColorEdit3("Sun colour", &a.sun->color.x, ImGuiColorEditFlags_Float));
-  }
   if (changed) {
-    if (a.sun) {
-      a.sun->azimuthDeg = std::clamp(a.sun->azimuthDeg, -360.0f, 360.0f);
-      a.sun->elevationDeg = std::clamp(a.sun->elevationDeg, -90.0f, 90.0f);
-      a.sun->illuminanceLux = std::clamp(a.sun->illuminanceLux, 0.0f, 1e6f);
-      a.sun->color = glm::clamp(a.sun->color, glm::vec3(0.0f), glm::vec3(1.0f));
-    }
     a.scattering = std::max(a.scattering, 0.0f);
     a.absorption = std::max(a.absorption, 0.0f);
     Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
     if (!s) gui.say(s.error().str(), true);
   }
   drawDensity(gui);
+  drawSun(gui);
 
   ImGui::Separator();
   ImGui::TextUnformatted("View (not saved in the show)");
