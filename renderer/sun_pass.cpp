@@ -29,9 +29,13 @@ glm::mat4 sunViewProjection(const glm::vec3& d, const glm::vec3& lo, const glm::
     vmin = glm::min(vmin, p);
     vmax = glm::max(vmax, p);
   }
-  const float pad = 0.01f * radius + 1e-3f;  // a venue that is a flat floor still has extent
+  // The map's edges are the box's own (sun.glsl clamps lookups half a texel inside them, so a
+  // wall on the box's face that the sun grazes keeps its texels); a small margin only keeps a
+  // flat venue's map from being degenerate, and the box off the depth range's clip planes.
+  const float pad = 1e-4f * radius + 1e-4f, depthPad = 0.01f * radius + 1e-3f;
   // View space looks down -z: near and far are distances, -vmax.z and -vmin.z.
-  return glm::ortho(vmin.x - pad, vmax.x + pad, vmin.y - pad, vmax.y + pad, -vmax.z - pad, -vmin.z + pad) * view;
+  return glm::ortho(vmin.x - pad, vmax.x + pad, vmin.y - pad, vmax.y + pad, -vmax.z - depthPad,
+                    -vmin.z + depthPad) * view;
 }
 
 }  // namespace

@@ -39,17 +39,31 @@ vec2 sunBoxChord(vec3 e, vec3 v, float tMax) {
   return vec2(max(0.0, max(lo.x, max(lo.y, lo.z))), min(tMax, min(hi.x, min(hi.y, hi.z))));
 }
 
-// V_sun at a point of the medium: one hardware 2x2 PCF tap.
-float sunVisibilityVolume(vec3 x) {
+// Where x falls in the map, its (u, v) clamped half a texel inside the map's edges, which are
+// the venue box's: a wall on the box's face that the sun only grazes covers no texel of its
+// own, and the empty texels beyond it would light a slab of air along it.
+vec3 sunMapCoord(vec3 x) {
   vec3 s = (uSunViewProj * vec4(x, 1.0)).xyz * 0.5 + 0.5;
-  if (any(lessThan(s, vec3(0.0))) || any(greaterThan(s, vec3(1.0)))) return 1.0;
-  return texture(uSunShadow, s);
+  vec2 halfTexel = 0.5 / vec2(textureSize(uSunShadow, 0));
+  return vec3(clamp(s.xy, halfTexel, 1.0 - halfTexel), s.z);
+}
+
+// V_sun at a point of the medium: one hardware 2x2 PCF tap, the point taken a texel and a half
+// farther from the sun: air just behind a wall that the sun meets at a slant otherwise reads
+// the wall's depth a texel away as in front of it (a speckle of light inside the wall).
+float sunVisibilityVolume(vec3 x) {
+  vec3 s = sunMapCoord(x);
+  if (s.z < 0.0 || s.z > 1.0) return 1.0;
+  float mapWidthM = 2.0 / length(vec3(uSunViewProj[0][0], uSunViewProj[1][0], uSunViewProj[2][0]));
+  float depthPerM = 0.5 * length(vec3(uSunViewProj[0][2], uSunViewProj[1][2], uSunViewProj[2][2]));
+  float bias = 1.5 * mapWidthM / float(textureSize(uSunShadow, 0).x) * depthPerM;
+  return texture(uSunShadow, vec3(s.xy, s.z + bias));
 }
 
 // V_sun at a surface point: the 2x2 tap and four around it, as the beams' surfaces have.
 float sunVisibility(vec3 x) {
-  vec3 s = (uSunViewProj * vec4(x, 1.0)).xyz * 0.5 + 0.5;
-  if (any(lessThan(s, vec3(0.0))) || any(greaterThan(s, vec3(1.0)))) return 1.0;
+  vec3 s = sunMapCoord(x);
+  if (s.z < 0.0 || s.z > 1.0) return 1.0;
   vec2 texel = 1.0 / vec2(textureSize(uSunShadow, 0));
   float v = texture(uSunShadow, s) * 0.5;
   v += texture(uSunShadow, vec3(s.xy + vec2(0.5, 0.5) * texel, s.z)) * 0.125;

@@ -184,8 +184,8 @@ void check(const std::string& name, const Venue& venue, const ReferenceImages& r
 TEST_F(SunRender, AShaftThroughAWindowMatchesTheReference) {
   const Venue venue = windowRoom();
   const ReferenceImages ref = reference("sun_window", venue, sunFrame(270.0f, 30.0f));
-  // Measured (L_in cores / wide / sunlit surfaces): high 0.78 % / 0.80 % / 0.51 %, default
-  // 5.03 % / 5.16 % / 1.09 % (64 steps and one frame: noise across the shaft's edges). The
+  // Measured (L_in cores / wide / sunlit surfaces): high 0.79 % / 0.81 % / 0.48 %, default
+  // 5.02 % / 5.15 % / 1.05 % (64 steps and one frame: noise across the shaft's edges). The
   // limits are those times about 1.5, rounded up; the sun 3 degrees off measures 27 % / 6 %,
   // and the shaft 10 % brighter fails them too.
   check("sun_window_high", venue, ref, renderSettingsFor(Quality::High, kW, kH), 0.013, 0.013, 0.008);
@@ -194,7 +194,7 @@ TEST_F(SunRender, AShaftThroughAWindowMatchesTheReference) {
   // depth-aware upsample and the refinement, which the sun's march shares with the beams.
   RenderSettings half = renderSettingsFor(Quality::Default, kW, kH);
   half.scatterDivisor = 2;
-  // Measured 5.12 % / 5.24 % / 1.09 %: the same limits as at full resolution.
+  // Measured 5.13 % / 5.25 % / 1.05 %: the same limits as at full resolution.
   check("sun_window_default_half", venue, ref, half, 0.077, 0.079, 0.017);
 }
 
@@ -203,8 +203,8 @@ TEST_F(SunRender, AShaftThroughUnevenHazeMatchesTheReference) {
   FrameState frame = sunFrame(270.0f, 30.0f);
   frame.medium.density = unevenAir(venue);
   const ReferenceImages ref = reference("sun_window_field", venue, frame);
-  // Measured (L_in cores / wide / sunlit surfaces): high 0.94 % / 0.96 % / 3.4 %, default
-  // 4.67 % / 4.76 % / 3.9 %. The surfaces' error is the sun's path map, trilinear between the
+  // Measured (L_in cores / wide / sunlit surfaces): high 0.89 % / 0.91 % / 3.3 %, default
+  // 4.66 % / 4.75 % / 3.8 %. The surfaces' error is the sun's path map, trilinear between the
   // cell centres of the field's grid, across the ground layer's step from 3 to 0.4 that the
   // sun crosses on its way to the floor. Limits about 1.5 times these; the sun 3 degrees off
   // measures 29 % / 9 %, the uniform medium 64 %.
