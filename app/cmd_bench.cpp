@@ -27,6 +27,7 @@
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/image_compare.h"
+#include "renderer/scene/physics.h"
 
 namespace haze {
 namespace {
@@ -135,7 +136,7 @@ int runStudy(int width, int height) {
 constexpr const char* kBenchUsage =
     "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells separate|merged]]\n"
     "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
-    "                  [--min-samples M] [--refine C] [--density N] [--no-bodies | --compare-bodies]\n"
+    "                  [--min-samples M] [--refine C] [--density N] [--no-bodies | --compare-bodies] [--sun]\n"
     "                  [--shadows soft|hard|compare] [--compare-reference] [--json]\n"
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
@@ -148,12 +149,14 @@ constexpr const char* kBenchUsage =
     "--compare-bodies also renders the frame without them, alternating frame by frame, and gives the\n"
     "bodies' share of the frame (docs/rendering.md, \"Fixture bodies\"). --shadows soft|hard sets the\n"
     "shadows (default: the show's, soft for the synthetic stage); --shadows compare renders soft and hard\n"
-    "alternating frame by frame and gives the soft shadows' cost ratio (docs/rendering.md, \"Soft shadows\").\n";
+    "alternating frame by frame and gives the soft shadows' cost ratio (docs/rendering.md, \"Soft shadows\").\n"
+    "--sun also renders the frame with a sun (azimuth 250, elevation 35, 50000 lux; a show's own sun is left\n"
+    "out of the base frame), alternating frame by frame, and gives its cost ratio (docs/rendering.md, \"The sun\").\n";
 
 int runBench(const Args& args) {
   int fixtures = -1, width = 1280, height = 720, frames = 5;
   std::string quality = "default", showPath, cue, camera, cells = "separate", shadows;
-  bool json = false, compare = false, study = false, noBodies = false, compareBodies = false;
+  bool json = false, compare = false, study = false, noBodies = false, compareBodies = false, sun = false;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
   double refine = -1.0;                            // -1: the preset's
   int densityCells = 0;
@@ -170,6 +173,7 @@ int runBench(const Args& args) {
       .flag("--compare-reference", compare)
       .flag("--no-bodies", noBodies)
       .flag("--compare-bodies", compareBodies)
+      .flag("--sun", sun)
       .flag("--study", study)
       .integer("--planes", planes, 1, 4096, "1..4096")
       .integer("--scatter-divisor", divisor, 1, 8, "1..8")
@@ -202,9 +206,10 @@ int runBench(const Args& args) {
   if (noBodies && compareBodies) return fail("--no-bodies and --compare-bodies exclude each other");
   if (compareBodies && densityCells > 0) return fail("--compare-bodies and --density exclude each other");
   const bool compareShadows = shadows == "compare";
-  if (compareShadows && (compareBodies || densityCells > 0))
-    return fail("--shadows compare excludes --compare-bodies and --density");
+  if (compareShadows && (compareBodies || densityCells > 0 || sun))
+    return fail("--shadows compare excludes --compare-bodies, --density and --sun");
   if (!shadows.empty()) frame.softShadows = shadows != "hard";
+  if (sun && (compareBodies || densityCells > 0)) return fail("--sun excludes --density and --compare-bodies");
   if (noBodies) {  // the fixtures' housings left out, as haze render --no-bodies does
     frame.bodies.clear();
     frame.bodyMeshes.clear();
@@ -239,10 +244,14 @@ int runBench(const Args& args) {
     if (!r) return fail(r.error().str());
     dense = std::move(*r);
   }
-  // The same frame with hard shadows, the same way: what the soft shadows cost.
-  if (compareShadows) {
+  // The same frame with hard shadows, or with a sun, the same way: what the soft shadows cost,
+  // or what the sun costs (its shadow map, its term in the surfaces and its march; the base
+  // frame then has none).
+  if (compareShadows || sun) {
+    if (sun) frame.sun = SunState{};
     denseFrame = frame;
-    denseFrame.softShadows = false;
+    if (compareShadows) denseFrame.softShadows = false;
+    if (sun) denseFrame.sun = SunState{.on = true, .direction = sunDirection(250.0f, 35.0f), .illuminance = glm::vec3(50000.0f)};
     auto r = Renderer::create(venue, settings);
     if (!r) return fail(r.error().str());
     dense = std::move(*r);
@@ -353,6 +362,13 @@ int runBench(const Args& args) {
                      {"pass_ms_without", {{"surfaces", median(denseSurfaces)}, {"planes", median(denseBeams)}}},
                      {"ratio_frame", without > 0 ? with / without : 0.0},
                      {"share_of_frame", with > 0 ? (with - without) / with : 0.0}};
+  } else if (dense && sun) {
+    out["sun"] = {{"median_frame_ms", median(denseTotal)},
+                  {"cold_frame_ms", denseColdMs},
+                  {"pass_ms", {{"surfaces", median(denseSurfaces)}, {"planes", median(denseBeams)}}},
+                  {"ratio_frame", median(total) > 0 ? median(denseTotal) / median(total) : 0.0},
+                  {"ratio_surfaces", median(surfaces) > 0 ? median(denseSurfaces) / median(surfaces) : 0.0},
+                  {"ratio_planes", median(beams) > 0 ? median(denseBeams) / median(beams) : 0.0}};
   } else if (dense) {
     out["density"] = {{"grid", densityCells},
                       {"median_frame_ms", median(denseTotal)},
@@ -402,6 +418,11 @@ int runBench(const Args& args) {
                   "frame); surfaces %.1f ms without\n", frame.bodies.size(), frame.bodyMeshes.size(), median(denseTotal),
                   out["bodies"]["ratio_frame"].get<double>(), 100 * out["bodies"]["share_of_frame"].get<double>(),
                   median(denseSurfaces));
+    else if (dense && sun)
+      std::printf("  with a sun: %.1f ms per frame (%.2fx), surfaces %.1f ms (%.2fx), planes and sun march %.1f ms "
+                  "(%.2fx); cold %.1f ms\n", median(denseTotal), out["sun"]["ratio_frame"].get<double>(),
+                  median(denseSurfaces), out["sun"]["ratio_surfaces"].get<double>(), median(denseBeams),
+                  out["sun"]["ratio_planes"].get<double>(), denseColdMs);
     else if (dense)
       std::printf("  through a %d^3 density field with a hazer: %.1f ms per frame (%.2fx), %.0f ms CPU (%.2fx), planes "
                   "%.1f ms (%.2fx), surfaces %.1f ms; cold %.1f ms\n", densityCells, median(denseTotal),

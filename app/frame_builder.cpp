@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/cell_merge.h"
+#include "renderer/scene/physics.h"
 
 namespace haze {
 namespace {
@@ -46,6 +47,15 @@ MediumState mediumState(const AtmosphereDef& def) {
   return m;
 }
 
+SunState sunState(const std::optional<SunDef>& def) {
+  SunState s;
+  if (!def || !def->enabled) return s;
+  s.on = true;
+  s.direction = sunDirection(def->azimuthDeg, def->elevationDeg);
+  s.illuminance = def->color * def->illuminanceLux;
+  return s;
+}
+
 uint64_t poseCacheKey(const BeamPose& pose) {
   uint64_t pk = kFnvBasis;
   pk = hashValue(pk, pose.lensPosition);
@@ -74,6 +84,7 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
   frame.medium = mediumState(show.atmosphere);
   frame.medium.density = options.density;
   frame.softShadows = options.softShadows.value_or(show.atmosphere.softShadows);
+  frame.sun = sunState(show.atmosphere.sun);
 
   for (const FixtureDef& f : show.fixtures) {
     auto p = profiles.find(f.profile);

@@ -45,5 +45,7 @@ uint64_t poseCacheKey(const BeamPose& pose);
 
 CameraState cameraState(const CameraDef& def);
 MediumState mediumState(const AtmosphereDef& def);
+// The show's sun as the renderer sees it (off when absent or disabled).
+SunState sunState(const std::optional<SunDef>& def);
 
 }  // namespace haze

@@ -17,7 +17,7 @@ RenderSettings renderSettingsFor(Quality q, int width, int height) {
   switch (q) {
     case Quality::Draft:
       s = {.width = width, .height = height, .lightMapSize = 256, .shadowMapSize = 512, .planes = 24,
-           .scatterDivisor = 2, .frames = 1, .minSamplesPerChord = 4};
+           .scatterDivisor = 2, .frames = 1, .minSamplesPerChord = 4, .sunMapSize = 1024, .sunSteps = 32};
       break;
     case Quality::Default:
       // From HD up the in-scattering is rendered at half resolution and upsampled with the
@@ -27,12 +27,12 @@ RenderSettings renderSettingsFor(Quality q, int width, int height) {
       // (tests/render/beams_vs_reference_test.cpp, docs/rendering.md, "Refinement").
       s = {.width = width, .height = height, .lightMapSize = 512, .shadowMapSize = 1024, .planes = 48,
            .scatterDivisor = width >= 1280 ? 2 : 1, .refineCurvature = 0.1f, .refineFloor = 2.0f, .frames = 1,
-           .minSamplesPerChord = 16};
+           .minSamplesPerChord = 16, .sunMapSize = 2048, .sunSteps = 64};
       break;
     case Quality::High:
     case Quality::Reference:
       s = {.width = width, .height = height, .lightMapSize = 1024, .shadowMapSize = 2048, .planes = 128,
-           .scatterDivisor = 1, .frames = 4, .minSamplesPerChord = 16};
+           .scatterDivisor = 1, .frames = 4, .minSamplesPerChord = 16, .sunMapSize = 4096, .sunSteps = 128};
       s.shadowTexelBudget = int64_t{64} << 20;  // 256 MB: eight 2048 px maps, 76 of 928 px
       break;
   }

@@ -102,10 +102,11 @@ void BeamPass::resize(int width, int height) {
 
 uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, const DensityResources& density,
                           GLuint sceneDepth,
-                          GLuint radianceFbo, bool accumulate) {
+                          GLuint radianceFbo, bool accumulate, const SunPass* sun) {
   const MediumState& med = frame.medium;
   beamsDrawn_ = 0;
-  if (med.scattering <= 0.0f || frame.beams.empty()) return 0;
+  if (sun && !sun->lit()) sun = nullptr;
+  if (med.scattering <= 0.0f || (frame.beams.empty() && !sun)) return 0;
   const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
   glBindTextureUnit(HAZE_UNIT_SCENE_DEPTH, sceneDepth);
   glBindVertexArray(vao_.id());
@@ -171,6 +172,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
     glBindFramebuffer(GL_FRAMEBUFFER, scatterFbo_.id());
     glViewport(0, 0, lowW_, lowH_);
     fragments += drawBeams(planes_.id(), jitter, frame, footprints, lowW_, lowH_);
+    if (sun) sun->drawScatter(frame, aspect, jitter, density);
     if (refining()) {
       // The mask follows the first frame of an accumulation and is kept for the rest, so that
       // every refined pixel averages the same frames.
@@ -181,6 +183,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
       glStencilFunc(GL_EQUAL, 1, 0xFF);
       glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
       drawBeams(planesFine_.id(), jitter, frame, footprints, width_, height_);
+      if (sun) sun->drawScatter(frame, aspect, jitter, density);
       glDisable(GL_STENCIL_TEST);
     }
     ++accumulated_;

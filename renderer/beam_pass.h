@@ -17,6 +17,7 @@
 #include "renderer/density_resources.h"
 #include "renderer/gl/objects.h"
 #include "renderer/scene/frame_state.h"
+#include "renderer/sun_pass.h"
 
 namespace haze {
 
@@ -54,9 +55,10 @@ class BeamPass {
   // accumulate, the scattering of earlier calls is kept and this call's frames (jittered on
   // from frame number firstFrame) are added: progressive refinement while nothing moves.
   // Returns the plane fragments rasterised (footprint pixels times planes), for the bench.
+  // The sun's in-scattering (sun, when lit) is added into the same buffer, frame by frame.
   uint64_t render(const FrameState& frame, const BeamResources& beams, const DensityResources& density,
                   GLuint sceneDepth, GLuint radianceFbo,
-                  bool accumulate = false);
+                  bool accumulate = false, const SunPass* sun = nullptr);
   const BeamPassSettings& settings() const { return settings_; }
   int accumulatedFrames() const { return accumulated_; }
   // Beams whose in-scattering the last render drew (lit, drawn, footprint in view).

@@ -16,6 +16,7 @@
 #include "renderer/gpu_bodies.h"
 #include "renderer/gpu_venue.h"
 #include "renderer/light_tiles.h"
+#include "renderer/sun_pass.h"
 #include "renderer/scene/camera_basis.h"
 #include "shaders/interface.h"
 
@@ -62,6 +63,7 @@ struct Renderer::Impl {
   // The radiance target without its depth, for passes that read the scene depth as a texture.
   gl::Framebuffer radianceOnlyFbo{"radiance_only_fbo"};
   BeamPass beamPass;
+  SunPass sun;
   LightTiles tiles;
   gl::VertexArray emptyVao{"fullscreen_vao"};
   // Shadow maps, surfaces, beams; used only with RenderSettings::timePasses.
@@ -133,6 +135,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
                                 .lattice = settings.lattice});
   if (!pass) return pass.error();
   impl->beamPass = std::move(*pass);
+  auto sun = SunPass::create({.mapSize = settings.sunMapSize, .steps = settings.sunSteps});
+  if (!sun) return sun.error();
+  impl->sun = std::move(*sun);
   auto tiles = LightTiles::create(settings.width, settings.height);
   if (!tiles) return tiles.error();
   impl->tiles = std::move(*tiles);
@@ -168,6 +173,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   };
   begin(0);
   BeamUpdateStats stats = m.beams.update(frame, m.venue, m.shadowProgram);
+  times_.sunMapRendered = m.sun.update(frame, m.venue, m.shadowProgram);
   end();
   times_.shadowMapsRendered = stats.shadowMapsRendered;
   times_.lightMapsBaked = stats.lightMapsBaked;
@@ -233,6 +239,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glProgramUniform1i(prog, HAZE_LOC_SURFACE_MASK_WORDS, m.tiles.maskWords());
   m.beams.bindSoftShadows(prog);
   m.density.bind(prog);
+  m.sun.bind(prog);
   m.venue.bind();
   for (const GpuVenue::Draw& d : m.venue.draws()) {
     const GpuVenue::GpuMaterial& mat = m.venue.materials()[static_cast<size_t>(d.material)];
@@ -284,7 +291,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
 
   begin(2);
   times_.planeFragments =
-      m.beamPass.render(frame, m.beams, m.density, m.depth.id(), m.radianceOnlyFbo.id(), accumulate);
+      m.beamPass.render(frame, m.beams, m.density, m.depth.id(), m.radianceOnlyFbo.id(), accumulate, &m.sun);
   end();
   times_.accumulatedFrames = m.beamPass.accumulatedFrames();
   times_.beamsDrawn = m.beamPass.beamsDrawn();

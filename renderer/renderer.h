@@ -30,6 +30,8 @@ struct RenderSettings {
   bool fusedPlanes = true;  // see BeamPassSettings::fused
   int minSamplesPerChord = 8;
   int lattice = 0;          // see BeamPassSettings::lattice
+  int sunMapSize = 2048;    // the sun's shadow map (SunPassSettings::mapSize)
+  int sunSteps = 64;        // the sun's march samples per eye ray and frame
   // Surfaces loop only over the beams that reach their 16x16 tile (renderer/light_tiles.h);
   // off, every pixel tries every beam (same image, for tests and the bench).
   bool tiledSurfaces = true;
@@ -56,6 +58,7 @@ struct DisplaySettings {
 struct PassTimes {
   double shadowMapsMs = 0, surfacesMs = 0, beamsMs = 0, postMs = 0, meterMs = 0;
   int shadowMapsRendered = 0, lightMapsBaked = 0;
+  bool sunMapRendered = false;
   int shadowMapSize = 0, lightMapLayers = 0;  // see BeamUpdateStats
   int beamsDrawn = 0;                // in-scattering footprints drawn (in view, lit)
   double beamsPerTile = 0;           // surfaces: beams tried per lit 16x16 tile (timePasses only)

@@ -35,6 +35,8 @@
 #define HAZE_UNIT_SCATTER_FINE 12   // composite.frag.glsl: full-resolution in-scattering where refined
 #define HAZE_UNIT_REFINE_MASK 13    // composite.frag.glsl: 1 where the pixel was refined
 #define HAZE_UNIT_SHADOW_DEPTH 14   // beams.glsl: the shadow maps again, raw depth (no compare; soft shadows' blocker search)
+#define HAZE_UNIT_SUN_SHADOW 15     // sun.glsl: depth seen from the sun (orthographic over the venue's box)
+#define HAZE_UNIT_SUN_PATH 16       // sun.glsl: the integral of D towards the sun, over the density grid
 // No image units are used.
 
 // ---- Shader storage buffer bindings -------------------------------------------------------
@@ -127,6 +129,14 @@
 
 // beams.glsl's soft shadows (with the surface and virtual-plane programs; 71..74 free for them)
 #define HAZE_LOC_SOFT_SHADOWS 70        // int: 1 = V(x) is the visible fraction of the lens disc
+// sun.glsl (with the surface program and sun_scatter.frag.glsl; docs/rendering.md, "The sun")
+#define HAZE_LOC_SUN_ON 75           // int: 0 = no sun (nothing of the sun is evaluated)
+#define HAZE_LOC_SUN_DIRECTION 76    // vec3, unit: the way the sun's light travels
+#define HAZE_LOC_SUN_ILLUMINANCE 77  // vec3: c * E [lux]
+#define HAZE_LOC_SUN_VIEW_PROJ 78    // mat4 (78..81): world to the sun's shadow map
+#define HAZE_LOC_SUN_BOX_MIN 82      // vec3: the sun's medium (the venue's bounding box)
+#define HAZE_LOC_SUN_BOX_MAX 83      // vec3
+#define HAZE_LOC_SUN_MARCH 84        // vec4 (sun_scatter.frag.glsl): sigma_s, sigma_t, steps, frame jitter
 
 // ---- Enums --------------------------------------------------------------------------------
 // haze::Phase (renderer/scene/frame_state.h) asserts its values against these.

@@ -1,7 +1,8 @@
-// Surfaces lit by every beam, per docs/physics.md: two-sided Lambert with I_eff, V, cosine,
+// Surfaces lit by every beam and the sun, per docs/physics.md: two-sided Lambert with I_eff, V, cosine,
 // exp(-sigma_t r) / r^2, plus ambient and emission, then attenuated by exp(-sigma_t T) to the eye.
 #include "beams.glsl"
 #include "density.glsl"
+#include "sun.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -75,6 +76,7 @@ void main() {
         irradiance += beamIrradiance(w * 32 + findLSB(bits), n);
     }
   }
+  if (uSunOn != 0) irradiance += sunIrradiance(vPosition, n, uSigmaT);
   vec3 L = albedo / PI * irradiance + albedo * uAmbient + emission;
   outRadiance = vec4(L * exp(-uSigmaT * (uDensityOn != 0 ? eyePathTo(vPosition) : T)), 1.0);
 }

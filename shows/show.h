@@ -38,6 +38,18 @@ struct CameraDef {
   float farM = 100.0f;
 };
 
+// The sun (docs/physics.md, "The sun"): a directional light over the whole venue, entering a
+// closed room only through its openings. Azimuth from north (-Z) towards east (+X), seen from
+// above; elevation above the horizon (the XZ plane).
+struct SunDef {
+  bool enabled = true;
+  float azimuthDeg = 180.0f;
+  float elevationDeg = 45.0f;
+  float illuminanceLux = 10000.0f;  // on a plane perpendicular to the sun's direction
+  glm::vec3 color{1.0f};            // linear RGB filter
+  bool operator==(const SunDef&) const = default;
+};
+
 struct AtmosphereDef {
   float scattering = 0.0f;      // sigma_s [1/m]
   float absorption = 0.0f;      // sigma_a [1/m]
@@ -50,6 +62,7 @@ struct AtmosphereDef {
   // "shadows": "soft" (default) | "hard": shadows softened by each lens disc, or point lights
   // (docs/physics.md, "Soft shadows"; FrameState::softShadows).
   bool softShadows = true;
+  std::optional<SunDef> sun;  // none: no sun
 };
 
 struct Patch {

@@ -329,12 +329,30 @@ void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& 
   at.density = d;
 }
 
+void readSun(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) {
+  if (!r.isObject(j, p, "the sun")) return;
+  r.onlyKeys(j, p, {"enabled", "azimuth", "elevation", "illuminance_lux", "color"});
+  SunDef sun;
+  if (const json* e = r.member(j, p, "enabled", false)) {
+    if (e->is_boolean())
+      sun.enabled = e->get<bool>();
+    else
+      r.problem(p + "/enabled", std::string("expected true or false, got ") + typeName(*e));
+  }
+  r.numberMember(j, p, "azimuth", false, -360.0, 360.0, "an azimuth in degrees from north (-Z) towards east (+X)",
+                 sun.azimuthDeg);
+  r.numberMember(j, p, "elevation", false, -90.0, 90.0, "an elevation in degrees above the horizon", sun.elevationDeg);
+  r.numberMember(j, p, "illuminance_lux", false, 0.0, 1e6, "an illuminance in lux", sun.illuminanceLux);
+  if (const json* c = r.member(j, p, "color", false)) r.greyOrRgb(*c, p + "/color", "the sun's colour", sun.color);
+  at.sun = sun;
+}
+
 void readAtmosphere(Reader& r, const json& root, Show& show) {
   const json* a = r.member(root, "", "atmosphere", false);
   if (!a || !r.isObject(*a, "/atmosphere", "the atmosphere")) return;
   const std::string p = "/atmosphere";
   AtmosphereDef& at = show.atmosphere;
-  r.onlyKeys(*a, p, {"scattering", "absorption", "phase", "g", "ambient", "background", "density", "shadows"});
+  r.onlyKeys(*a, p, {"scattering", "absorption", "phase", "g", "ambient", "background", "density", "shadows", "sun"});
   r.numberMember(*a, p, "scattering", false, 0.0, kInf, "a scattering coefficient in 1/m", at.scattering);
   r.numberMember(*a, p, "absorption", false, 0.0, kInf, "an absorption coefficient in 1/m", at.absorption);
   std::string phase;
@@ -356,6 +374,7 @@ void readAtmosphere(Reader& r, const json& root, Show& show) {
     else
       r.problem(p + "/shadows", "unknown shadow kind \"" + shadows + "\"; expected soft or hard");
   }
+  if (const json* j = r.member(*a, p, "sun", false)) readSun(r, *j, p + "/sun", at);
 }
 
 void readCameras(Reader& r, const json& root, Show& show) {

@@ -189,6 +189,15 @@ ojson showJson(const Show& s) {
   if (a.background != glm::vec3(0.0f)) at["background"] = greyOrRgb(a.background);
   if (a.density) at["density"] = densityJson(*a.density);
   if (!a.softShadows) at["shadows"] = "hard";  // soft, the default, is not written
+  if (a.sun) {
+    ojson sun = ojson::object();
+    sun["enabled"] = a.sun->enabled;
+    sun["azimuth"] = tidy(a.sun->azimuthDeg);
+    sun["elevation"] = tidy(a.sun->elevationDeg);
+    sun["illuminance_lux"] = tidy(a.sun->illuminanceLux);
+    sun["color"] = greyOrRgb(a.sun->color);
+    at["sun"] = sun;
+  }
   root["atmosphere"] = at;
   ojson cams = ojson::array();
   for (const CameraDef& c : s.cameras) {

@@ -1,11 +1,14 @@
 // The atmosphere tab: scattering, absorption, phase function (and g for Henyey-Greenstein),
-// ambient light, soft or hard shadows (docs/physics.md), each a setAtmosphere command (a drag is one undo step); the
+// ambient light, soft or hard shadows and the sun (docs/physics.md), each a setAtmosphere command (a drag is one
+// undo step); the
 // density field (docs/shows.md, "Density"): base, ground fog, air flow and hazers; and the
 // view's render quality, exposure and bloom, which are not part of the show.
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
+
+#include <glm/common.hpp>
 
 #include "app/gui/gui.h"
 #include "shows/dmx/udp_receiver.h"
@@ -115,6 +118,48 @@ void drawDensity(Gui& gui) {
   }
 }
 
+// The sun (docs/shows.md, "The sun"), below the density field so that the rows above keep
+// their places: switching it on for the first time adds the default sun.
+void drawSun(Gui& gui) {
+  ShowDocument& doc = *gui.doc;
+  AtmosphereDef a = doc.show().atmosphere;
+  bool changed = false;
+  ImGuiID item = 0;
+  auto track = [&](bool c) {
+    if (c) {
+      changed = true;
+      item = ImGui::GetItemID();
+    }
+  };
+  bool sunOn = a.sun && a.sun->enabled;
+  if (ImGui::Checkbox("Sun", &sunOn)) {
+    if (!a.sun) a.sun = SunDef{};
+    a.sun->enabled = sunOn;
+    changed = true;
+    item = ImGui::GetItemID();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Daylight: a directional light that enters the venue through its openings (docs/shows.md)");
+  if (a.sun && a.sun->enabled) {
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Azimuth deg", &a.sun->azimuthDeg, 0.5f, -360.0f, 360.0f, "%.1f"));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("From north (-Z) towards east (+X), seen from above");
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Elevation deg", &a.sun->elevationDeg, 0.25f, -90.0f, 90.0f, "%.1f"));
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Sun lux", &a.sun->illuminanceLux, 100.0f, 0.0f, 1e6f, "%.0f"));
+    ImGui::SetNextItemWidth(160);
+    track(ImGui::ColorEdit3("Sun colour", &a.sun->color.x, ImGuiColorEditFlags_Float));
+  }
+  if (!changed) return;
+  a.sun->azimuthDeg = std::clamp(a.sun->azimuthDeg, -360.0f, 360.0f);
+  a.sun->elevationDeg = std::clamp(a.sun->elevationDeg, -90.0f, 90.0f);
+  a.sun->illuminanceLux = std::clamp(a.sun->illuminanceLux, 0.0f, 1e6f);
+  a.sun->color = glm::clamp(a.sun->color, glm::vec3(0.0f), glm::vec3(1.0f));
+  Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
+  if (!s) gui.say(s.error().str(), true);
+}
+
 }  // namespace
 
 void drawAtmosphereTab(Gui& gui) {
@@ -156,8 +201,9 @@ void drawAtmosphereTab(Gui& gui) {
     if (!s) gui.say(s.error().str(), true);
   }
   drawDensity(gui);
+  drawSun(gui);
   // Soft: shadows softened by each lens disc; hard: point lights (docs/physics.md, "Soft
-  // shadows"). Below the density, so the rows above keep their places.
+  // shadows"). Below the density and the sun, so the rows above keep their places.
   AtmosphereDef withShadows = doc.show().atmosphere;
   int shadows = withShadows.softShadows ? 0 : 1;
   const char* shadowKinds[] = {"soft", "hard"};

@@ -17,6 +17,7 @@
 #include <glm/geometric.hpp>
 
 #include "renderer/reference/cone.h"
+#include "renderer/reference/sun.h"
 #include "renderer/scene/body_hit.h"
 #include "renderer/scene/camera_basis.h"
 #include "renderer/scene/physics.h"
@@ -306,6 +307,7 @@ glm::vec3 shadeSurface(const Bvh& bvh, const FrameState& frame, const std::vecto
     const float path = frame.medium.density ? frame.medium.density->integral(lens, position) : r;
     direct += intensity * static_cast<float>(vis * cosine * std::exp(-sigmaT * path) / (r * r));
   }
+  direct += sunIrradiance(bvh, frame.medium, frame.sun, position, lifted, ng, n);
   return albedo / kPi * direct + albedo * frame.medium.ambient + emission;
 }
 
@@ -393,6 +395,7 @@ PixelRadiance radiance(const Bvh& bvh, const FrameState& frame,
   if (frame.medium.scattering > 0.0f) {
     for (const ActiveBeam& ab : beams)
       out.inScattered += inScatterOneBeam(bvh, frame.medium, ab, e, v, out.depthM, o);
+    out.inScattered += sunInScatter(bvh, frame.medium, frame.sun, e, v, out.depthM, o.sunStepM);
   }
   return out;
 }

@@ -40,6 +40,9 @@ struct ReferenceOptions {
   // Test the centre and eight rim points first and sample the whole disc only where they
   // disagree (the penumbra); false: always the whole disc.
   bool lensDiscProbe = true;
+  // The sun's in-scattering is marched in steps of at most this length along the eye ray
+  // (its integrand is smooth but for shadow edges, which are bisected).
+  float sunStepM = 0.02f;
   // Worker threads; 0 = one per hardware thread.
   int threads = 0;
   // Called on the calling thread after each row it finishes, with the rows done by all threads

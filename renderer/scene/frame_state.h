@@ -45,6 +45,16 @@ struct MediumState {
   float extinction() const { return scattering + absorption; }
 };
 
+// The sun (docs/physics.md, "The sun"): light of illuminance E arriving along one direction
+// everywhere, through the venue's openings. sunDirection (renderer/scene/physics.h) turns a
+// show's azimuth and elevation into `direction`.
+struct SunState {
+  bool on = false;
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // unit, the way the light travels (from the sun)
+  glm::vec3 illuminance{0.0f};             // c * E [lux per linear RGB channel]
+  bool lit() const { return on && (illuminance.r > 0.0f || illuminance.g > 0.0f || illuminance.b > 0.0f); }
+};
+
 struct BeamState {
   int fixtureId = 0;
   int cell = -1;  // the cell of a multi-cell fixture this beam is (docs/cells.md); -1: the fixture's one beam
@@ -60,6 +70,7 @@ struct FrameState {
   CameraState camera;
   MediumState medium;
   std::vector<BeamState> beams;
+  SunState sun;
   // The fixtures' housings (docs/rendering.md, "Fixture bodies"): seen by the camera and lit by
   // the beams, but casting no shadow (shadow maps are cached per beam; bodies move with pan).
   std::vector<BodyBox> bodies;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -34,6 +35,29 @@ glm::vec3 beamIntensityTowards(const BeamState& beam, const glm::vec3& x) {
   const float theta = std::acos(cz);
   const float phi = std::atan2(glm::dot(w, beam.pose.yb), glm::dot(w, beam.pose.xb));
   return beam.optics.intensityCd(theta, phi);
+}
+
+}  // namespace haze
+
+namespace haze {
+
+glm::vec3 sunDirection(float azimuthDeg, float elevationDeg) {
+  const float az = azimuthDeg * kPi / 180.0f, el = elevationDeg * kPi / 180.0f;
+  const glm::vec3 towardsSun(std::sin(az) * std::cos(el), std::sin(el), -std::cos(az) * std::cos(el));
+  return -glm::normalize(towardsSun);
+}
+
+float sunPathInBox(const glm::vec3& x, const glm::vec3& direction, const glm::vec3& lo, const glm::vec3& hi) {
+  for (int a = 0; a < 3; ++a)
+    if (x[a] < lo[a] || x[a] > hi[a]) return 0.0f;
+  // Inside: the exit distance along u = -direction is the nearest of the far slabs.
+  float exit = std::numeric_limits<float>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    const float u = -direction[a];
+    if (u > 0.0f) exit = std::min(exit, (hi[a] - x[a]) / u);
+    if (u < 0.0f) exit = std::min(exit, (lo[a] - x[a]) / u);
+  }
+  return std::isfinite(exit) ? std::max(exit, 0.0f) : 0.0f;
 }
 
 }  // namespace haze

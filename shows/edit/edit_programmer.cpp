@@ -175,6 +175,14 @@ class SetAtmosphere final : public EditCommand {
     return Ok{};
   }
   void undo(EditTarget& t) override { t.show.atmosphere = before_; }
+  // A drag on one of the Air tab's fields is one undo step (the GUI asks to merge only while
+  // the same widget is being edited).
+  bool absorb(const EditCommand& next) override {
+    auto* n = dynamic_cast<const SetAtmosphere*>(&next);
+    if (!n) return false;
+    after_ = n->after_;
+    return true;
+  }
 
  private:
   AtmosphereDef after_, before_;

@@ -46,6 +46,8 @@ if [ -f "$repo/examples/demo/demo.haze.json" ]; then
   valid "$repo/examples/demo/demo.haze.json"
   # The demo's rig in air that is not uniform (docs/shows.md, "Density").
   valid "$repo/examples/demo/air.haze.json"
+  # A room lit by the sun through its window (docs/shows.md, "The sun").
+  valid "$repo/examples/demo/sun.haze.json"
 else
   echo "FAIL: the bundled demo show examples/demo/demo.haze.json is missing"
   fail=$((fail + 1))
