@@ -73,6 +73,12 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
   }
   frame.medium = mediumState(show.atmosphere);
   frame.medium.density = options.density;
+  // Visible dust (docs/shows.md, "Particles"): the show's settings, switched by the options; it
+  // moves with the room's air of the density spec and stands where the show clock puts it.
+  frame.particles.settings = show.atmosphere.particles.value_or(ParticleSettings{});
+  if (options.particles) frame.particles.settings.enabled = *options.particles;
+  frame.particles.timeS = options.clockS;
+  if (show.atmosphere.density) frame.particles.airFlowMps = show.atmosphere.density->airFlowMps;
 
   for (const FixtureDef& f : show.fixtures) {
     auto p = profiles.find(f.profile);

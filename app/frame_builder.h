@@ -32,6 +32,9 @@ struct FrameOptions {
   double clockS = 0.0;
   // The medium's density field at the frame's time (app/atmosphere_field.h); none: uniform.
   std::shared_ptr<const DensityField> density;
+  // Visible dust in the beams (docs/rendering.md, "Particles"): on or off over the show's
+  // atmosphere.particles.enabled; none: as the show says.
+  std::optional<bool> particles;
 };
 
 // cameraName "" = the show's first camera (or a default view of the stage when it has none).

@@ -57,6 +57,8 @@ class RenderSession {
   std::optional<ImageRGB> referenceImage_;  // the last draw's, under Quality::Reference
   AtmosphereField atmosphere_;
   HazerSchedule hazers_;
+  // What draw() passes as FrameOptions::particles (renderToFile turns them off for PFM and EXR).
+  std::optional<bool> particles_;
 };
 
 }  // namespace haze

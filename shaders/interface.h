@@ -34,6 +34,7 @@
 #define HAZE_UNIT_LENS_PATH 11      // density.glsl: the integral of D from each lens, over light-map (u, v) x r
 #define HAZE_UNIT_SCATTER_FINE 12   // composite.frag.glsl: full-resolution in-scattering where refined
 #define HAZE_UNIT_REFINE_MASK 13    // composite.frag.glsl: 1 where the pixel was refined
+#define HAZE_UNIT_PARTICLES 17      // particles.vert.glsl: RGBA32F texture buffer, two texels per particle
 // No image units are used.
 
 // ---- Shader storage buffer bindings -------------------------------------------------------
@@ -123,6 +124,11 @@
 #define HAZE_LOC_EYE_PATH_UP_TAN 66     // vec3: up * tan(fov_y / 2)
 #define HAZE_LOC_EYE_PATH_DEPTH 67      // float: the view depth of the map's last slice
 #define HAZE_LOC_LENS_PATH_GRID 68      // ivec4: tiles across, tiles down, texels per tile side, r slices
+
+// particles.vert.glsl / particles.frag.glsl (visible dust; with beams, camera, phase and density)
+#define HAZE_LOC_PARTICLES_VIEW_PROJ 85   // mat4 (85..88)
+#define HAZE_LOC_PARTICLES_SIGMA_T 89     // float
+#define HAZE_LOC_PARTICLES_SPRITE 90      // vec4: kernel radius (px), 1 / a pixel's solid angle on the axis (1/sr), display gain, 0
 
 // ---- Enums --------------------------------------------------------------------------------
 // haze::Phase (renderer/scene/frame_state.h) asserts its values against these.

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "atmosphere/density_spec.h"
+#include "atmosphere/particle_spec.h"
 #include "fixtures/attributes.h"
 #include "fixtures/profile.h"
 #include "fixtures/core/result.h"
@@ -47,6 +48,8 @@ struct AtmosphereDef {
   glm::vec3 background{0.0f};   // number or [r, g, b] in the file; 0 unless the show sets one
   // The density field D(x) (docs/shows.md, "Density"); none: D = 1 everywhere.
   std::optional<DensitySpec> density;
+  // Visible dust in the beams (docs/shows.md, "Particles"); none: the defaults, off.
+  std::optional<ParticleSettings> particles;
 };
 
 struct Patch {

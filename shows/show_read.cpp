@@ -329,12 +329,34 @@ void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& 
   at.density = d;
 }
 
+// atmosphere.particles (docs/shows.md, "Particles").
+void readParticles(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) {
+  if (!r.isObject(j, p, "the particles")) return;
+  r.onlyKeys(j, p, {"enabled", "density", "size_um", "size_sigma", "brightness", "seed"});
+  ParticleSettings ps;
+  if (const json* e = r.member(j, p, "enabled", false)) {
+    if (e->is_boolean())
+      ps.enabled = e->get<bool>();
+    else
+      r.problem(p + "/enabled", std::string("expected true or false, got ") + typeName(*e));
+  }
+  r.numberMember(j, p, "density", false, 0.0, kMaxParticleDensityPerM3, "particles per m^3", ps.densityPerM3);
+  r.numberMember(j, p, "size_um", false, 1.0, 1000.0, "a median diameter in micrometres", ps.sizeUm);
+  r.numberMember(j, p, "size_sigma", false, 0.0, 2.0, "the standard deviation of ln(diameter)", ps.sizeSigma);
+  r.numberMember(j, p, "brightness", false, 0.0, 1e7, "a display gain", ps.brightness);
+  if (r.member(j, p, "seed", false)) {
+    int seed = 1;
+    if (r.integer(j["seed"], p + "/seed", 0, 2147483647, "a seed 0..2147483647", seed)) ps.seed = static_cast<uint32_t>(seed);
+  }
+  at.particles = ps;
+}
+
 void readAtmosphere(Reader& r, const json& root, Show& show) {
   const json* a = r.member(root, "", "atmosphere", false);
   if (!a || !r.isObject(*a, "/atmosphere", "the atmosphere")) return;
   const std::string p = "/atmosphere";
   AtmosphereDef& at = show.atmosphere;
-  r.onlyKeys(*a, p, {"scattering", "absorption", "phase", "g", "ambient", "background", "density"});
+  r.onlyKeys(*a, p, {"scattering", "absorption", "phase", "g", "ambient", "background", "density", "particles"});
   r.numberMember(*a, p, "scattering", false, 0.0, kInf, "a scattering coefficient in 1/m", at.scattering);
   r.numberMember(*a, p, "absorption", false, 0.0, kInf, "an absorption coefficient in 1/m", at.absorption);
   std::string phase;
@@ -349,6 +371,7 @@ void readAtmosphere(Reader& r, const json& root, Show& show) {
   if (const json* j = r.member(*a, p, "background", false))
     r.greyOrRgb(*j, p + "/background", "the background radiance", at.background);
   if (const json* j = r.member(*a, p, "density", false)) readDensity(r, *j, p + "/density", at);
+  if (const json* j = r.member(*a, p, "particles", false)) readParticles(r, *j, p + "/particles", at);
 }
 
 void readCameras(Reader& r, const json& root, Show& show) {

@@ -13,6 +13,7 @@
 #include "fixtures/beam_optics.h"
 #include "fixtures/body.h"
 #include "fixtures/pose.h"
+#include "renderer/scene/particles.h"
 #include "shaders/interface.h"
 
 namespace haze {
@@ -65,6 +66,9 @@ struct FrameState {
   std::vector<BodyBox> bodies;
   // The parts that have a model of their own (a GDTF's mesh): its triangles, placed.
   std::vector<BodyMesh> bodyMeshes;
+  // Visible dust in the beams (docs/rendering.md, "Particles"): a display option, drawn only
+  // when particles.settings.enabled; off, the image is the radiometric one.
+  ParticleState particles;
 };
 
 }  // namespace haze
