@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -44,8 +45,15 @@ ParticleStats ParticlePass::render(const FrameState& frame, const BeamResources&
                      .halfAngleRad = std::acos(std::clamp(g.lensPos.w, -1.0f, 1.0f)), .lengthM = beams.reachM(i),
                      .beam = i});
   }
+  // Dust fills the room: the venue's box, grown to hold the lenses and the camera (a venue of
+  // a floor alone is flat).
+  glm::vec3 lo = glm::min(boundsMin, frame.camera.position), hi = glm::max(boundsMax, frame.camera.position);
+  for (const ParticleCone& c : cones) {
+    lo = glm::min(lo, c.apex);
+    hi = glm::max(hi, c.apex);
+  }
   const DensityField* field = frame.medium.density ? frame.medium.density.get() : nullptr;
-  const ParticleSet set = generateParticles(frame.particles, cones, field, boundsMin, boundsMax);
+  const ParticleSet set = generateParticles(frame.particles, cones, field, lo, hi);
   stats.drawn = set.particles.size();
   stats.wanted = set.wanted;
   stats.cellsTried = set.cellsTried;
