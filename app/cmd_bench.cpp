@@ -136,6 +136,7 @@ constexpr const char* kBenchUsage =
     "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells separate|merged]]\n"
     "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
     "                  [--min-samples M] [--refine C] [--density N] [--no-bodies | --compare-bodies]\n"
+    "                  [--compare-particles [--particle-density N]]\n"
     "                  [--compare-reference] [--json]\n"
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
@@ -146,12 +147,14 @@ constexpr const char* kBenchUsage =
     "with a hazer (the bench scene's: docs/rendering.md, \"Density\"), alternating frame by frame with the\n"
     "uniform medium, and gives the cost ratio. --no-bodies leaves the fixtures' housings out;\n"
     "--compare-bodies also renders the frame without them, alternating frame by frame, and gives the\n"
-    "bodies' share of the frame (docs/rendering.md, \"Fixture bodies\").\n";
+    "bodies' share of the frame (docs/rendering.md, \"Fixture bodies\"). --compare-particles renders it\n"
+    "with visible dust too (--particle-density N per m^3), alternating, and gives the cost ratio.\n";
 
 int runBench(const Args& args) {
   int fixtures = -1, width = 1280, height = 720, frames = 5;
   std::string quality = "default", showPath, cue, camera, cells = "separate";
-  bool json = false, compare = false, study = false, noBodies = false, compareBodies = false;
+  bool json = false, compare = false, study = false, noBodies = false, compareBodies = false, compareParticles = false;
+  double particleDensity = ParticleSettings{}.densityPerM3;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
   double refine = -1.0;                            // -1: the preset's
   int densityCells = 0;
@@ -168,6 +171,8 @@ int runBench(const Args& args) {
       .flag("--compare-reference", compare)
       .flag("--no-bodies", noBodies)
       .flag("--compare-bodies", compareBodies)
+      .flag("--compare-particles", compareParticles)
+      .number("--particle-density", particleDensity, 0.0, kMaxParticleDensityPerM3, "particles per m^3, 0..5000")
       .flag("--study", study)
       .integer("--planes", planes, 1, 4096, "1..4096")
       .integer("--scatter-divisor", divisor, 1, 8, "1..8")
@@ -197,6 +202,8 @@ int runBench(const Args& args) {
   }
   if (noBodies && compareBodies) return fail("--no-bodies and --compare-bodies exclude each other");
   if (compareBodies && densityCells > 0) return fail("--compare-bodies and --density exclude each other");
+  if (compareParticles && (compareBodies || densityCells > 0))
+    return fail("--compare-particles excludes --compare-bodies and --density");
   if (noBodies) {  // the fixtures' housings left out, as haze render --no-bodies does
     frame.bodies.clear();
     frame.bodyMeshes.clear();
@@ -231,7 +238,16 @@ int runBench(const Args& args) {
     if (!r) return fail(r.error().str());
     dense = std::move(*r);
   }
-  std::vector<double> denseTotal, denseCpu, denseBeams, denseSurfaces;
+  // The same frame with visible dust (docs/rendering.md, "Particles"), the same way: what it costs.
+  if (compareParticles) {
+    denseFrame = frame;
+    denseFrame.particles.settings.enabled = true;
+    denseFrame.particles.settings.densityPerM3 = static_cast<float>(particleDensity);
+    auto r = Renderer::create(venue, settings);
+    if (!r) return fail(r.error().str());
+    dense = std::move(*r);
+  }
+  std::vector<double> denseTotal, denseCpu, denseBeams, denseSurfaces, denseParticles, denseGenerate;
   double denseColdMs = 0.0;
 
   std::vector<double> total, cpu, shadow, surfaces, beams, post, meter;
@@ -273,6 +289,8 @@ int runBench(const Args& args) {
         denseCpu.push_back(processCpuMs() - dcpu0);
         denseBeams.push_back(dense->lastTimes().beamsMs);
         denseSurfaces.push_back(dense->lastTimes().surfacesMs);
+        denseParticles.push_back(dense->lastTimes().particlesMs);
+        denseGenerate.push_back(dense->lastTimes().particlesGenerateMs);
       }
     }
     shadow.push_back(t.shadowMapsMs);
@@ -325,6 +343,18 @@ int runBench(const Args& args) {
                      {"pass_ms_without", {{"surfaces", median(denseSurfaces)}, {"planes", median(denseBeams)}}},
                      {"ratio_frame", without > 0 ? with / without : 0.0},
                      {"share_of_frame", with > 0 ? (with - without) / with : 0.0}};
+  } else if (dense && compareParticles) {
+    const PassTimes& pt = dense->lastTimes();
+    out["particles"] = {{"density_per_m3", particleDensity},
+                        {"drawn", pt.particlesDrawn},
+                        {"wanted", pt.particlesWanted},
+                        {"limit", denseFrame.particles.limit},
+                        {"median_frame_ms_with", median(denseTotal)},
+                        {"median_frame_cpu_ms_with", median(denseCpu)},
+                        {"pass_ms", median(denseParticles)},
+                        {"generate_ms", median(denseGenerate)},
+                        {"ratio_frame", median(total) > 0 ? median(denseTotal) / median(total) : 0.0},
+                        {"ratio_cpu", median(cpu) > 0 ? median(denseCpu) / median(cpu) : 0.0}};
   } else if (dense) {
     out["density"] = {{"grid", densityCells},
                       {"median_frame_ms", median(denseTotal)},
@@ -368,6 +398,12 @@ int runBench(const Args& args) {
                   "frame); surfaces %.1f ms without\n", frame.bodies.size(), frame.bodyMeshes.size(), median(denseTotal),
                   out["bodies"]["ratio_frame"].get<double>(), 100 * out["bodies"]["share_of_frame"].get<double>(),
                   median(denseSurfaces));
+    else if (dense && compareParticles)
+      std::printf("  with particles (%.0f per m^3): %zu drawn of %zu wanted (limit %zu), %.1f ms per frame (%.2fx), %.0f ms "
+                  "CPU (%.2fx); particle pass %.1f ms, finding them %.1f ms (CPU)\n", particleDensity,
+                  dense->lastTimes().particlesDrawn, dense->lastTimes().particlesWanted, denseFrame.particles.limit,
+                  median(denseTotal), out["particles"]["ratio_frame"].get<double>(), median(denseCpu),
+                  out["particles"]["ratio_cpu"].get<double>(), median(denseParticles), median(denseGenerate));
     else if (dense)
       std::printf("  through a %d^3 density field with a hazer: %.1f ms per frame (%.2fx), %.0f ms CPU (%.2fx), planes "
                   "%.1f ms (%.2fx), surfaces %.1f ms; cold %.1f ms\n", densityCells, median(denseTotal),

@@ -8,7 +8,7 @@ namespace haze {
 
 struct ParticleSettings {
   bool enabled = false;
-  float densityPerM3 = 200.0f;  // particles per m^3 where D = 1 (number density n0 D(x))
+  float densityPerM3 = 50.0f;   // particles per m^3 where D = 1 (number density n0 D(x))
   float sizeUm = 40.0f;         // median diameter of the log-normal size distribution
   float sizeSigma = 0.5f;       // standard deviation of ln(diameter)
   // Display gain over the particle's physical scattering (docs/physics.md, "Particles"): real
