@@ -1,6 +1,7 @@
 // The atmosphere tab: scattering, absorption, phase function (and g for Henyey-Greenstein),
 // ambient light (docs/physics.md), each a setAtmosphere command (a drag is one undo step); the
-// density field (docs/shows.md, "Density"): base, ground fog, air flow and hazers; and the
+// density field (docs/shows.md, "Density"): base, ground fog, air flow and hazers; visible dust
+// (docs/shows.md, "Particles"); and the
 // view's render quality, exposure and bloom, which are not part of the show.
 #include <algorithm>
 #include <cmath>
@@ -115,6 +116,41 @@ void drawDensity(Gui& gui) {
   }
 }
 
+// Visible dust in the beams (docs/shows.md, "Particles"): part of the show, a display option
+// (PFMs have none unless asked). A drag is one undo step, as for the atmosphere above.
+void drawParticles(Gui& gui) {
+  ShowDocument& doc = *gui.doc;
+  AtmosphereDef a = doc.show().atmosphere;
+  ParticleSettings ps = a.particles.value_or(ParticleSettings{});
+  bool changed = false;
+  ImGuiID item = 0;
+  auto track = [&](bool edited) {
+    if (edited) {
+      changed = true;
+      item = ImGui::GetItemID();
+    }
+  };
+  track(ImGui::Checkbox("Particles", &ps.enabled));
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Visible dust where the beams light it, drifting with the air: display only (docs/rendering.md)");
+  if (ps.enabled) {
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Dust per m^3", &ps.densityPerM3, 1.0f, 0.0f, kMaxParticleDensityPerM3, "%.0f"));
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Dust size um", &ps.sizeUm, 0.5f, 1.0f, 1000.0f, "%.0f"));
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Dust brightness", &ps.brightness, 50.0f, 0.0f, 1e7f, "%.0f"));
+  }
+  if (changed) {
+    ps.densityPerM3 = std::clamp(ps.densityPerM3, 0.0f, kMaxParticleDensityPerM3);
+    ps.sizeUm = std::clamp(ps.sizeUm, 1.0f, 1000.0f);
+    ps.brightness = std::clamp(ps.brightness, 0.0f, 1e7f);
+    a.particles = ps;
+    Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
+    if (!s) gui.say(s.error().str(), true);
+  }
+}
+
 }  // namespace
 
 void drawAtmosphereTab(Gui& gui) {
@@ -156,6 +192,7 @@ void drawAtmosphereTab(Gui& gui) {
     if (!s) gui.say(s.error().str(), true);
   }
   drawDensity(gui);
+  drawParticles(gui);
 
   ImGui::Separator();
   ImGui::TextUnformatted("View (not saved in the show)");
