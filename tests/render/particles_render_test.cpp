@@ -1,6 +1,7 @@
 // Visible dust (docs/rendering.md, "Particles"): off, the radiance is bit for bit the image
 // without the option; on, light is added only where an eye ray crosses a beam's cone, the same at
-// the same time, elsewhere at a later time, in proportion to the density, and none for a dark beam.
+// the same time, elsewhere at a later time, in proportion to the density, and none for a dark beam;
+// above the frame's limit the render warns with the numbers.
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "render_test_util.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/camera_basis.h"
+#include "renderer/scene/physics.h"
 
 namespace haze::test {
 namespace {
@@ -128,6 +130,45 @@ TEST_F(ParticlesRender, LightIsAddedOnlyInsideTheBeam) {
   EXPECT_GT(light, 0.0);
 }
 
+// The light the particles add, summed over the image as L times each pixel's solid angle, is the
+// flux physics.md gives them at the eye: sum of G C p(a) I_eff / r^2 T T / d^2 over the same
+// particles (found again on the CPU: the cone out to the floor, the box the renderer uses).
+TEST_F(ParticlesRender, AddedLightIsTheParticlesFluxAtTheEye) {
+  const FrameState f = dustFrame(true, 100.0f, 1.0);
+  const Render on = renderFrame(venue_, f), off = renderFrame(venue_, dustFrame(false));
+  const CameraBasis b = cameraBasis(f.camera, float(kW) / kH);
+  const double pixelSr = 4.0 * b.tanX * b.tanY / (double(kW) * kH);
+  double measured = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const float sx = ((x + 0.5f) / kW) * 2.0f - 1.0f, sy = 1.0f - ((y + 0.5f) / kH) * 2.0f;
+      const glm::vec3 ray = b.forward + sx * b.tanX * b.right + sy * b.tanY * b.up;
+      const double cosT = 1.0 / glm::length(ray);
+      const size_t i = static_cast<size_t>(y) * kW + x;
+      measured += (on.image.pixels[i].r - off.image.pixels[i].r) * pixelSr * cosT * cosT * cosT;
+    }
+  const BeamState& beam = f.beams[0];
+  const std::vector<ParticleCone> cones = {
+      {.apex = kLens, .axis = kDir, .halfAngleRad = beam.optics.cutoffHalfAngleRad(), .lengthM = 30.0f, .beam = 0}};
+  const glm::vec3 lo = glm::min(venue_.boundsMin, f.camera.position), hi = glm::max(venue_.boundsMax, kLens);
+  const ParticleSet set = generateParticles(f.particles, cones, nullptr, glm::min(lo, kLens),
+                                            glm::max(hi, f.camera.position));
+  const float sigmaT = f.medium.extinction();
+  double expected = 0;
+  for (const Particle& p : set.particles) {
+    const glm::vec3 toLens = p.positionM - kLens, toEye = f.camera.position - p.positionM;
+    const float r = glm::length(toLens), d = glm::length(toEye);
+    const float cosA = glm::dot(toLens / r, toEye / d);
+    const double J = f.particles.settings.brightness * p.crossSectionM2 * phaseFunction(f.medium, cosA) *
+                     beamIntensityTowards(beam, p.positionM).r / (r * r) * std::exp(-sigmaT * r);
+    expected += J * std::exp(-sigmaT * d) / (d * d);
+  }
+  std::printf("  %zu particles on the GPU, %zu on the CPU; flux at the eye %.6g, expected %.6g (%.2f %%)\n",
+              on.times.particlesDrawn, set.particles.size(), measured, expected, 100.0 * (measured / expected - 1.0));
+  EXPECT_EQ(on.times.particlesDrawn, set.particles.size());
+  EXPECT_NEAR(measured / expected, 1.0, 0.01);  // measured 0.1 %: ten times that
+}
+
 TEST_F(ParticlesRender, TheSameTimeGivesTheSameImageALaterTimeMovesThem) {
   const Render a = renderFrame(venue_, dustFrame(true, 40.0f, 4.0));
   const Render b = renderFrame(venue_, dustFrame(true, 40.0f, 4.0));
@@ -158,6 +199,23 @@ TEST_F(ParticlesRender, CountAndLightFollowTheDensity) {
               thick.times.particlesDrawn, count, lThick / lThin);
   EXPECT_NEAR(count, 4.0, 0.4);
   EXPECT_NEAR(lThick / lThin, 4.0, 0.8);
+}
+
+TEST_F(ParticlesRender, AboveTheLimitTheRenderSaysHowManyWereLeftOut) {
+  FrameState f = dustFrame(true);
+  f.particles.limit = 100;
+  auto r = Renderer::create(venue_, renderSettingsFor(Quality::Draft, kW, kH));
+  ASSERT_TRUE(r.ok()) << r.error().str();
+  (*r)->render(f);
+  const PassTimes& t = (*r)->lastTimes();
+  EXPECT_EQ(t.particlesDrawn, 100u);
+  EXPECT_GT(t.particlesWanted, 1000u);
+  ASSERT_EQ((*r)->warnings().size(), 1u);
+  EXPECT_EQ((*r)->warnings()[0], "particles: 100 of " + std::to_string(t.particlesWanted) +
+                                     " drawn, the limit of 100 per frame (thinned evenly; lower the particle density)");
+  f.particles.limit = kDefaultParticleLimit;
+  (*r)->render(f);
+  EXPECT_TRUE((*r)->warnings().empty());
 }
 
 TEST_F(ParticlesRender, ADarkBeamShowsNone) {
