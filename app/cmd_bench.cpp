@@ -137,7 +137,8 @@ constexpr const char* kBenchUsage =
     "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells separate|merged]]\n"
     "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
     "                  [--min-samples M] [--refine C] [--density N] [--no-bodies | --compare-bodies] [--sun]\n"
-    "                  [--shadows soft|hard|compare] [--compare-reference] [--json]\n"
+    "                  [--shadows soft|hard|compare] [--compare-particles [--particle-density N]]\n"
+    "                  [--compare-reference] [--json]\n"
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
     "first unless --cue, from the show's first camera unless --camera) per frame and per pass;\n"
@@ -151,12 +152,16 @@ constexpr const char* kBenchUsage =
     "shadows (default: the show's, soft for the synthetic stage); --shadows compare renders soft and hard\n"
     "alternating frame by frame and gives the soft shadows' cost ratio (docs/rendering.md, \"Soft shadows\").\n"
     "--sun also renders the frame with a sun (azimuth 250, elevation 35, 50000 lux; a show's own sun is left\n"
-    "out of the base frame), alternating frame by frame, and gives its cost ratio (docs/rendering.md, \"The sun\").\n";
+    "out of the base frame), alternating frame by frame, and gives its cost ratio (docs/rendering.md, \"The sun\").\n"
+    "--compare-particles renders it with visible dust too (--particle-density N per m^3), alternating, and\n"
+    "gives the cost ratio.\n";
 
 int runBench(const Args& args) {
   int fixtures = -1, width = 1280, height = 720, frames = 5;
   std::string quality = "default", showPath, cue, camera, cells = "separate", shadows;
-  bool json = false, compare = false, study = false, noBodies = false, compareBodies = false, sun = false;
+  bool json = false, compare = false, study = false, noBodies = false, compareBodies = false, sun = false,
+       compareParticles = false;
+  double particleDensity = ParticleSettings{}.densityPerM3;
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
   double refine = -1.0;                            // -1: the preset's
   int densityCells = 0;
@@ -174,6 +179,8 @@ int runBench(const Args& args) {
       .flag("--no-bodies", noBodies)
       .flag("--compare-bodies", compareBodies)
       .flag("--sun", sun)
+      .flag("--compare-particles", compareParticles)
+      .number("--particle-density", particleDensity, 0.0, kMaxParticleDensityPerM3, "particles per m^3, 0..5000")
       .flag("--study", study)
       .integer("--planes", planes, 1, 4096, "1..4096")
       .integer("--scatter-divisor", divisor, 1, 8, "1..8")
@@ -206,10 +213,13 @@ int runBench(const Args& args) {
   if (noBodies && compareBodies) return fail("--no-bodies and --compare-bodies exclude each other");
   if (compareBodies && densityCells > 0) return fail("--compare-bodies and --density exclude each other");
   const bool compareShadows = shadows == "compare";
-  if (compareShadows && (compareBodies || densityCells > 0 || sun))
-    return fail("--shadows compare excludes --compare-bodies, --density and --sun");
+  if (compareShadows && (compareBodies || densityCells > 0 || sun || compareParticles))
+    return fail("--shadows compare excludes --compare-bodies, --density, --sun and --compare-particles");
   if (!shadows.empty()) frame.softShadows = shadows != "hard";
-  if (sun && (compareBodies || densityCells > 0)) return fail("--sun excludes --density and --compare-bodies");
+  if (sun && (compareBodies || densityCells > 0 || compareParticles))
+    return fail("--sun excludes --density, --compare-bodies and --compare-particles");
+  if (compareParticles && (compareBodies || densityCells > 0))
+    return fail("--compare-particles excludes --compare-bodies and --density");
   if (noBodies) {  // the fixtures' housings left out, as haze render --no-bodies does
     frame.bodies.clear();
     frame.bodyMeshes.clear();
@@ -244,19 +254,23 @@ int runBench(const Args& args) {
     if (!r) return fail(r.error().str());
     dense = std::move(*r);
   }
-  // The same frame with hard shadows, or with a sun, the same way: what the soft shadows cost,
-  // or what the sun costs (its shadow map, its term in the surfaces and its march; the base
-  // frame then has none).
-  if (compareShadows || sun) {
+  // The same frame with hard shadows, with a sun or with visible dust, the same way: what the
+  // soft shadows cost, what the sun costs (its shadow map, its term in the surfaces and its
+  // march; the base frame then has none), or what the particles cost (docs/rendering.md).
+  if (compareShadows || sun || compareParticles) {
     if (sun) frame.sun = SunState{};
     denseFrame = frame;
     if (compareShadows) denseFrame.softShadows = false;
     if (sun) denseFrame.sun = SunState{.on = true, .direction = sunDirection(250.0f, 35.0f), .illuminance = glm::vec3(50000.0f)};
+    if (compareParticles) {
+      denseFrame.particles.settings.enabled = true;
+      denseFrame.particles.settings.densityPerM3 = static_cast<float>(particleDensity);
+    }
     auto r = Renderer::create(venue, settings);
     if (!r) return fail(r.error().str());
     dense = std::move(*r);
   }
-  std::vector<double> denseTotal, denseCpu, denseBeams, denseSurfaces;
+  std::vector<double> denseTotal, denseCpu, denseBeams, denseSurfaces, denseParticles, denseGenerate;
   double denseColdMs = 0.0;
 
   std::vector<double> total, cpu, shadow, surfaces, beams, post, meter;
@@ -298,6 +312,8 @@ int runBench(const Args& args) {
         denseCpu.push_back(processCpuMs() - dcpu0);
         denseBeams.push_back(dense->lastTimes().beamsMs);
         denseSurfaces.push_back(dense->lastTimes().surfacesMs);
+        denseParticles.push_back(dense->lastTimes().particlesMs);
+        denseGenerate.push_back(dense->lastTimes().particlesGenerateMs);
       }
     }
     shadow.push_back(t.shadowMapsMs);
@@ -369,6 +385,18 @@ int runBench(const Args& args) {
                   {"ratio_frame", median(total) > 0 ? median(denseTotal) / median(total) : 0.0},
                   {"ratio_surfaces", median(surfaces) > 0 ? median(denseSurfaces) / median(surfaces) : 0.0},
                   {"ratio_planes", median(beams) > 0 ? median(denseBeams) / median(beams) : 0.0}};
+  } else if (dense && compareParticles) {
+    const PassTimes& pt = dense->lastTimes();
+    out["particles"] = {{"density_per_m3", particleDensity},
+                        {"drawn", pt.particlesDrawn},
+                        {"wanted", pt.particlesWanted},
+                        {"limit", denseFrame.particles.limit},
+                        {"median_frame_ms_with", median(denseTotal)},
+                        {"median_frame_cpu_ms_with", median(denseCpu)},
+                        {"pass_ms", median(denseParticles)},
+                        {"generate_ms", median(denseGenerate)},
+                        {"ratio_frame", median(total) > 0 ? median(denseTotal) / median(total) : 0.0},
+                        {"ratio_cpu", median(cpu) > 0 ? median(denseCpu) / median(cpu) : 0.0}};
   } else if (dense) {
     out["density"] = {{"grid", densityCells},
                       {"median_frame_ms", median(denseTotal)},
@@ -423,6 +451,12 @@ int runBench(const Args& args) {
                   "(%.2fx); cold %.1f ms\n", median(denseTotal), out["sun"]["ratio_frame"].get<double>(),
                   median(denseSurfaces), out["sun"]["ratio_surfaces"].get<double>(), median(denseBeams),
                   out["sun"]["ratio_planes"].get<double>(), denseColdMs);
+    else if (dense && compareParticles)
+      std::printf("  with particles (%.0f per m^3): %zu drawn of %zu wanted (limit %zu), %.1f ms per frame (%.2fx), %.0f ms "
+                  "CPU (%.2fx); particle pass %.1f ms, finding them %.1f ms (CPU)\n", particleDensity,
+                  dense->lastTimes().particlesDrawn, dense->lastTimes().particlesWanted, denseFrame.particles.limit,
+                  median(denseTotal), out["particles"]["ratio_frame"].get<double>(), median(denseCpu),
+                  out["particles"]["ratio_cpu"].get<double>(), median(denseParticles), median(denseGenerate));
     else if (dense)
       std::printf("  through a %d^3 density field with a hazer: %.1f ms per frame (%.2fx), %.0f ms CPU (%.2fx), planes "
                   "%.1f ms (%.2fx), surfaces %.1f ms; cold %.1f ms\n", densityCells, median(denseTotal),

@@ -29,7 +29,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: haze render SHOW [--cue N | --all-cues | --timecode hh:mm:ss:ff] [--at S] [--list NAME] [--camera NAME]\n"
     "                   [--width W --height H] [--quality draft|default|high|reference] [--exposure EV]\n"
-    "                   [--exposure-mode auto|manual] [--bloom F] [--exr-pixel half|float]\n"
+    "                   [--exposure-mode auto|manual] [--bloom F] [--exr-pixel half|float] [--particles|--no-particles]\n"
     "                   -o OUT.png|OUT.pfm|OUT.exr (one image) | -o DIR/ (with --all-cues)\n"
     "       haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--list NAME] [--from CUE] [--to CUE]\n"
     "                   [--fps N] [--hold S] [--duration S] [--codec NAME] [--caption] [--progress]\n"
@@ -59,7 +59,9 @@ constexpr const char* kUsage =
     "--cells separate|merged: one beam per cell (default), or a fixture's alike cells as one beam.\n"
     "--no-bodies leaves the fixtures' housings out (docs/fixtures.md, \"Bodies\").\n"
     "--shadows soft|hard: shadows softened by each lens disc or point lights' (default: the show's\n"
-    "atmosphere.shadows, soft unless it says hard; docs/physics.md, \"Soft shadows\").\n";
+    "atmosphere.shadows, soft unless it says hard; docs/physics.md, \"Soft shadows\").\n"
+    "--particles draws visible dust in the beams (the show's atmosphere.particles, on) and --no-particles\n"
+    "leaves it out; without either a PNG follows the show and a PFM or EXR has none (docs/rendering.md).\n";
 
 std::string secondsText(double s) {
   char text[32];
@@ -74,7 +76,7 @@ int runRender(const Args& args) {
                                                        cells = "separate", shadows;
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
-  bool allCues = false, progress = false, caption = false, noBodies = false;
+  bool allCues = false, progress = false, caption = false, noBodies = false, particlesOn = false, particlesOff = false;
   std::string video, from, to, codec = "libx264", timelineFile, timecodeText, timecodeRate = "25";
   double hold = 2.0, duration = 0.0;
   int fps = 25;
@@ -113,6 +115,8 @@ int runRender(const Args& args) {
       .flag("--progress", progress)
       .flag("--caption", caption)
       .flag("--no-bodies", noBodies)
+      .flag("--particles", particlesOn)
+      .flag("--no-particles", particlesOff)
       .text("--timeline", timelineFile, "a JSON file of GO times")
       .text("--timecode", timecodeText, "a timecode hh:mm:ss:ff")
       .choice("--timecode-rate", timecodeRate, {"24", "25", "30"})
@@ -154,6 +158,8 @@ int runRender(const Args& args) {
                            .exrPixel = *parseExrPixel(exrPixel), .progress = progress};
   if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
   if (!shadows.empty()) options.softShadows = shadows == "soft";
+  if (particlesOn && particlesOff) return fail("--particles and --no-particles exclude each other");
+  if (particlesOn || particlesOff) options.particles = particlesOn;
   if (!plays.empty()) {
     auto state = playListsAt(*show, *profiles, plays, at < 0 ? 1e9 : at, movement == "real");
     if (!state) return fail(state.error().str());

@@ -85,6 +85,12 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
   frame.medium.density = options.density;
   frame.softShadows = options.softShadows.value_or(show.atmosphere.softShadows);
   frame.sun = sunState(show.atmosphere.sun);
+  // Visible dust (docs/shows.md, "Particles"): the show's settings, switched by the options; it
+  // moves with the room's air of the density spec and stands where the show clock puts it.
+  frame.particles.settings = show.atmosphere.particles.value_or(ParticleSettings{});
+  if (options.particles) frame.particles.settings.enabled = *options.particles;
+  frame.particles.timeS = options.clockS;
+  if (show.atmosphere.density) frame.particles.airFlowMps = show.atmosphere.density->airFlowMps;
 
   for (const FixtureDef& f : show.fixtures) {
     auto p = profiles.find(f.profile);

@@ -34,6 +34,9 @@ struct FrameOptions {
   std::shared_ptr<const DensityField> density;
   // Soft or hard shadows (--shadows); none: the show's atmosphere.shadows.
   std::optional<bool> softShadows;
+  // Visible dust in the beams (docs/rendering.md, "Particles"): on or off over the show's
+  // atmosphere.particles.enabled; none: as the show says.
+  std::optional<bool> particles;
 };
 
 // cameraName "" = the show's first camera (or a default view of the stage when it has none).

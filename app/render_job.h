@@ -30,6 +30,9 @@ struct RenderJobOptions {
   bool bodies = true;       // the fixtures' housings (docs/fixtures.md, "Bodies"); --no-bodies
   std::optional<bool> softShadows;  // --shadows soft|hard; none: the show's atmosphere.shadows
   ExrPixel exrPixel = ExrPixel::Half;  // EXR only
+  // Visible dust (docs/rendering.md, "Particles"): --particles / --no-particles; none: a PNG
+  // follows the show's atmosphere.particles, a PFM or EXR stays radiometric (no particles).
+  std::optional<bool> particles;
   bool progress = false;  // --progress: report even when stderr is not a terminal (app/progress.h)
 };
 

@@ -67,6 +67,7 @@ Result<std::unique_ptr<RenderSession>> RenderSession::open(const Show& show, con
   auto renderer = Renderer::create(session->venue_, renderSettingsFor(gpuQuality, options.width, options.height));
   if (!renderer) return renderer.error();
   session->renderer_ = std::move(*renderer);
+  session->particles_ = options.particles;
   return session;
 }
 
@@ -80,7 +81,8 @@ Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const S
                                        .bodies = options_.bodies,
                                        .clockS = clockS,
                                        .density = std::move(density),
-                                       .softShadows = options_.softShadows});
+                                       .softShadows = options_.softShadows,
+                                       .particles = particles_});
   if (!frame) return frame.error();
   referenceImage_.reset();
   if (options_.quality == Quality::Reference) {
@@ -113,7 +115,16 @@ Status RenderSession::renderToFile(const Show& show, const ProfileSet& profiles,
   const std::string ext = out.extension().string();
   if (ext != ".pfm" && ext != ".png" && ext != ".exr")
     return Error{out.string(), "", "unknown image type (expected .png, .pfm or .exr)"};
-  if (Status s = draw(show, profiles, state, true, clockS); !s) return s;
+  // A radiometric file has no display particles unless they were asked for by name.
+  particles_ = options_.particles;
+  if (ext != ".png" && !particles_) particles_ = false;
+  if (ext != ".png" && *particles_)
+    std::fprintf(stderr, "haze: note: %s: --particles adds visible dust on top of the radiance; its pixels are "
+                 "the radiometric image plus the particles' display light (docs/rendering.md, \"Particles\")\n",
+                 out.string().c_str());
+  const Status drawn = draw(show, profiles, state, true, clockS);
+  particles_ = options_.particles;
+  if (!drawn) return drawn;
   if (ext == ".png") return writePng8(display(show), options_.width, options_.height, out);
   if (ext == ".pfm") return writePfm(radiance(), out);
   return writeExrWarning(radiance(), out, {.pixel = options_.exrPixel, .comment = comment});

@@ -39,6 +39,12 @@ class RenderSession {
   // How the hazers run over the playback (shows/hazer_levels.h); the frames drawn after this
   // see the density field of that schedule.
   void setHazers(HazerSchedule hazers) { hazers_ = std::move(hazers); }
+  // Visible dust for the frames drawn after this (FrameOptions::particles); none: as the show says.
+  void setParticles(std::optional<bool> on) { particles_ = on; }
+  // Whether draw() draws particles for this show now.
+  bool particlesOn(const Show& show) const {
+    return particles_.value_or(show.atmosphere.particles && show.atmosphere.particles->enabled);
+  }
 
   // `comment` goes into an EXR's header (what was rendered: show, cue list, cue, time).
   Status renderToFile(const Show& show, const ProfileSet& profiles, const StageState& state,
@@ -57,6 +63,8 @@ class RenderSession {
   std::optional<ImageRGB> referenceImage_;  // the last draw's, under Quality::Reference
   AtmosphereField atmosphere_;
   HazerSchedule hazers_;
+  // What draw() passes as FrameOptions::particles (renderToFile turns them off for PFM and EXR).
+  std::optional<bool> particles_;
 };
 
 }  // namespace haze

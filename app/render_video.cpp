@@ -130,6 +130,14 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
   const bool sequence = isImageSequence(job.out, patternError);
   if (!patternError.empty()) return Error{job.out.string(), "", patternError};
   const bool exr = sequence && job.out.extension() == ".exr";
+  // EXR frames are radiometric: no display particles unless --particles asked for them.
+  if (exr && !options.particles) session.setParticles(false);
+  if (exr && options.particles && *options.particles)
+    std::fprintf(stderr, "haze: note: %s: --particles adds visible dust on top of the radiance; its pixels are the "
+                 "radiometric image plus the particles' display light (docs/rendering.md, \"Particles\")\n",
+                 job.out.string().c_str());
+  // Particles drift with the air: every frame differs while they are drawn.
+  const bool particlesMove = session.particlesOn(show);
   std::unique_ptr<VideoWriter> writer;
   if (!sequence) {
     auto created = VideoWriter::create(job.out, {.width = options.width, .height = options.height, .fps = job.fps,
@@ -204,7 +212,7 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
       state = heads.advance(state, t, true);
     }
     // A drifting density field changes every frame, whatever the stage does.
-    if (f == 0 || state != lastState || densityMoves(show.atmosphere)) {
+    if (f == 0 || state != lastState || densityMoves(show.atmosphere) || particlesMove) {
       if (Status s = session.draw(show, profiles, state, false, t); !s) return s.error();
       if (exr)
         radiance = session.radiance();

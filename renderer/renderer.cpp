@@ -17,6 +17,7 @@
 #include "renderer/gpu_venue.h"
 #include "renderer/light_tiles.h"
 #include "renderer/sun_pass.h"
+#include "renderer/particle_pass.h"
 #include "renderer/scene/camera_basis.h"
 #include "shaders/interface.h"
 
@@ -64,11 +65,12 @@ struct Renderer::Impl {
   gl::Framebuffer radianceOnlyFbo{"radiance_only_fbo"};
   BeamPass beamPass;
   SunPass sun;
+  ParticlePass particles;
   LightTiles tiles;
   gl::VertexArray emptyVao{"fullscreen_vao"};
-  // Shadow maps, surfaces, beams; used only with RenderSettings::timePasses.
-  gl::TimerQuery timers[3] = {gl::TimerQuery{"shadow_maps_time"}, gl::TimerQuery{"surfaces_time"},
-                              gl::TimerQuery{"beams_time"}};
+  // Shadow maps, surfaces, beams, particles; used only with RenderSettings::timePasses.
+  gl::TimerQuery timers[4] = {gl::TimerQuery{"shadow_maps_time"}, gl::TimerQuery{"surfaces_time"},
+                              gl::TimerQuery{"beams_time"}, gl::TimerQuery{"particles_time"}};
 
   Impl(const Venue& v, const RenderSettings& s)
       : venue(v), beams(BeamResourceSettings{s.lightMapSize, s.shadowMapSize, s.shadowTexelBudget}) {}
@@ -138,6 +140,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   auto sun = SunPass::create({.mapSize = settings.sunMapSize, .steps = settings.sunSteps});
   if (!sun) return sun.error();
   impl->sun = std::move(*sun);
+  auto particles = ParticlePass::create();
+  if (!particles) return particles.error();
+  impl->particles = std::move(*particles);
   auto tiles = LightTiles::create(settings.width, settings.height);
   if (!tiles) return tiles.error();
   impl->tiles = std::move(*tiles);
@@ -293,14 +298,32 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   times_.planeFragments =
       m.beamPass.render(frame, m.beams, m.density, m.depth.id(), m.radianceOnlyFbo.id(), accumulate, &m.sun);
   end();
+  // Visible dust (docs/rendering.md, "Particles"): a display option added after the
+  // radiometric composite, so with it off the image is exactly the radiometric one.
+  if (frame.particles.settings.enabled) {
+    begin(3);
+    glBindFramebuffer(GL_FRAMEBUFFER, m.sceneFbo.id());
+    glViewport(0, 0, w, h);
+    const ParticleStats ps = m.particles.render(frame, m.beams, m.density, viewProj,
+                                                static_cast<float>(w) / static_cast<float>(h), w, h,
+                                                m.venue.boundsMin(), m.venue.boundsMax());
+    end();
+    times_.particlesDrawn = ps.drawn;
+    times_.particlesWanted = ps.wanted;
+    times_.particlesGenerateMs = ps.generateMs;
+    if (ps.wanted > ps.drawn)
+      warnings_.push_back("particles: " + std::to_string(ps.drawn) + " of " + std::to_string(ps.wanted) +
+                          " drawn, the limit of " + std::to_string(frame.particles.limit) +
+                          " per frame (thinned evenly; lower the particle density)");
+  }
   times_.accumulatedFrames = m.beamPass.accumulatedFrames();
   times_.beamsDrawn = m.beamPass.beamsDrawn();
   if (timing) {
     times_.scatteringFragments = m.beamPass.scatteringFragments();
     times_.refinedPixels = m.beamPass.refinedPixels();
     if (settings_.tiledSurfaces && m.beams.count() > 0) times_.beamsPerTile = m.tiles.meanBeamsPerTile();
-    double* ms[3] = {&times_.shadowMapsMs, &times_.surfacesMs, &times_.beamsMs};
-    for (int i = 0; i < 3; ++i) {
+    double* ms[4] = {&times_.shadowMapsMs, &times_.surfacesMs, &times_.beamsMs, &times_.particlesMs};
+    for (int i = 0; i < (frame.particles.settings.enabled ? 4 : 3); ++i) {
       GLuint64 ns = 0;
       glGetQueryObjectui64v(m.timers[i].id(), GL_QUERY_RESULT, &ns);
       *ms[i] = static_cast<double>(ns) * 1e-6;

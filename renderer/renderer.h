@@ -66,6 +66,11 @@ struct PassTimes {
   uint64_t scatteringFragments = 0;  // of those, the ones that added light (timePasses only)
   uint64_t refinedPixels = 0;        // rendered again at full resolution (timePasses only)
   int accumulatedFrames = 0;
+  // Visible dust (docs/rendering.md, "Particles"), with FrameState::particles enabled only.
+  double particlesMs = 0;             // the GL's part (timePasses only)
+  double particlesGenerateMs = 0;     // the CPU's part: finding the particles in the cones
+  size_t particlesDrawn = 0;          // sprites (a particle lit by two beams counts twice)
+  size_t particlesWanted = 0;         // before the per-frame limit; above particlesDrawn: thinned
 };
 
 class Renderer {

@@ -37,6 +37,7 @@
 #define HAZE_UNIT_SHADOW_DEPTH 14   // beams.glsl: the shadow maps again, raw depth (no compare; soft shadows' blocker search)
 #define HAZE_UNIT_SUN_SHADOW 15     // sun.glsl: depth seen from the sun (orthographic over the venue's box)
 #define HAZE_UNIT_SUN_PATH 16       // sun.glsl: the integral of D towards the sun, over the density grid
+#define HAZE_UNIT_PARTICLES 17      // particles.vert.glsl: RGBA32F texture buffer, two texels per particle
 // No image units are used.
 
 // ---- Shader storage buffer bindings -------------------------------------------------------
@@ -137,6 +138,10 @@
 #define HAZE_LOC_SUN_BOX_MIN 82      // vec3: the sun's medium (the venue's bounding box)
 #define HAZE_LOC_SUN_BOX_MAX 83      // vec3
 #define HAZE_LOC_SUN_MARCH 84        // vec4 (sun_scatter.frag.glsl): sigma_s, sigma_t, steps, frame jitter
+// particles.vert.glsl / particles.frag.glsl (visible dust; with beams, camera, phase and density)
+#define HAZE_LOC_PARTICLES_VIEW_PROJ 85   // mat4 (85..88)
+#define HAZE_LOC_PARTICLES_SIGMA_T 89     // float
+#define HAZE_LOC_PARTICLES_SPRITE 90      // vec4: kernel radius (px), 1 / a pixel's solid angle on the axis (1/sr), display gain, 0
 
 // ---- Enums --------------------------------------------------------------------------------
 // haze::Phase (renderer/scene/frame_state.h) asserts its values against these.

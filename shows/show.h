@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "atmosphere/density_spec.h"
+#include "atmosphere/particle_spec.h"
 #include "fixtures/attributes.h"
 #include "fixtures/profile.h"
 #include "fixtures/core/result.h"
@@ -63,6 +64,8 @@ struct AtmosphereDef {
   // (docs/physics.md, "Soft shadows"; FrameState::softShadows).
   bool softShadows = true;
   std::optional<SunDef> sun;  // none: no sun
+  // Visible dust in the beams (docs/shows.md, "Particles"); none: the defaults, off.
+  std::optional<ParticleSettings> particles;
 };
 
 struct Patch {

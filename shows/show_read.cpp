@@ -345,6 +345,26 @@ void readSun(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) 
   r.numberMember(j, p, "illuminance_lux", false, 0.0, 1e6, "an illuminance in lux", sun.illuminanceLux);
   if (const json* c = r.member(j, p, "color", false)) r.greyOrRgb(*c, p + "/color", "the sun's colour", sun.color);
   at.sun = sun;
+// atmosphere.particles (docs/shows.md, "Particles").
+void readParticles(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) {
+  if (!r.isObject(j, p, "the particles")) return;
+  r.onlyKeys(j, p, {"enabled", "density", "size_um", "size_sigma", "brightness", "seed"});
+  ParticleSettings ps;
+  if (const json* e = r.member(j, p, "enabled", false)) {
+    if (e->is_boolean())
+      ps.enabled = e->get<bool>();
+    else
+      r.problem(p + "/enabled", std::string("expected true or false, got ") + typeName(*e));
+  }
+  r.numberMember(j, p, "density", false, 0.0, kMaxParticleDensityPerM3, "particles per m^3", ps.densityPerM3);
+  r.numberMember(j, p, "size_um", false, 1.0, 1000.0, "a median diameter in micrometres", ps.sizeUm);
+  r.numberMember(j, p, "size_sigma", false, 0.0, 2.0, "the standard deviation of ln(diameter)", ps.sizeSigma);
+  r.numberMember(j, p, "brightness", false, 0.0, 1e7, "a display gain", ps.brightness);
+  if (r.member(j, p, "seed", false)) {
+    int seed = 1;
+    if (r.integer(j["seed"], p + "/seed", 0, 2147483647, "a seed 0..2147483647", seed)) ps.seed = static_cast<uint32_t>(seed);
+  }
+  at.particles = ps;
 }
 
 void readAtmosphere(Reader& r, const json& root, Show& show) {
@@ -352,7 +372,7 @@ void readAtmosphere(Reader& r, const json& root, Show& show) {
   if (!a || !r.isObject(*a, "/atmosphere", "the atmosphere")) return;
   const std::string p = "/atmosphere";
   AtmosphereDef& at = show.atmosphere;
-  r.onlyKeys(*a, p, {"scattering", "absorption", "phase", "g", "ambient", "background", "density", "shadows", "sun"});
+  r.onlyKeys(*a, p, {"scattering", "absorption", "phase", "g", "ambient", "background", "density", "shadows", "sun", "particles"});
   r.numberMember(*a, p, "scattering", false, 0.0, kInf, "a scattering coefficient in 1/m", at.scattering);
   r.numberMember(*a, p, "absorption", false, 0.0, kInf, "an absorption coefficient in 1/m", at.absorption);
   std::string phase;
@@ -375,6 +395,7 @@ void readAtmosphere(Reader& r, const json& root, Show& show) {
       r.problem(p + "/shadows", "unknown shadow kind \"" + shadows + "\"; expected soft or hard");
   }
   if (const json* j = r.member(*a, p, "sun", false)) readSun(r, *j, p + "/sun", at);
+  if (const json* j = r.member(*a, p, "particles", false)) readParticles(r, *j, p + "/particles", at);
 }
 
 void readCameras(Reader& r, const json& root, Show& show) {

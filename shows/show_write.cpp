@@ -174,6 +174,19 @@ ojson densityJson(const DensitySpec& d) {
   return o;
 }
 
+// atmosphere.particles as docs/shows.md lists it; "enabled" always, the rest when not default.
+ojson particlesJson(const ParticleSettings& ps) {
+  const ParticleSettings def;
+  ojson o = ojson::object();
+  o["enabled"] = ps.enabled;
+  if (ps.densityPerM3 != def.densityPerM3) o["density"] = tidy(ps.densityPerM3);
+  if (ps.sizeUm != def.sizeUm) o["size_um"] = tidy(ps.sizeUm);
+  if (ps.sizeSigma != def.sizeSigma) o["size_sigma"] = tidy(ps.sizeSigma);
+  if (ps.brightness != def.brightness) o["brightness"] = tidy(ps.brightness);
+  if (ps.seed != def.seed) o["seed"] = ps.seed;
+  return o;
+}
+
 ojson showJson(const Show& s) {
   ojson root = ojson::object();
   root["format"] = "haze-show";
@@ -198,6 +211,7 @@ ojson showJson(const Show& s) {
     sun["color"] = greyOrRgb(a.sun->color);
     at["sun"] = sun;
   }
+  if (a.particles) at["particles"] = particlesJson(*a.particles);
   root["atmosphere"] = at;
   ojson cams = ojson::array();
   for (const CameraDef& c : s.cameras) {

@@ -2,6 +2,9 @@
 // ambient light, soft or hard shadows and the sun (docs/physics.md), each a setAtmosphere command (a drag is one
 // undo step); the
 // density field (docs/shows.md, "Density"): base, ground fog, air flow and hazers; and the
+// ambient light (docs/physics.md), each a setAtmosphere command (a drag is one undo step); the
+// density field (docs/shows.md, "Density"): base, ground fog, air flow and hazers; visible dust
+// (docs/shows.md, "Particles"); and the
 // view's render quality, exposure and bloom, which are not part of the show.
 #include <algorithm>
 #include <cmath>
@@ -127,6 +130,16 @@ void drawSun(Gui& gui) {
   ImGuiID item = 0;
   auto track = [&](bool c) {
     if (c) {
+// Visible dust in the beams (docs/shows.md, "Particles"): part of the show, a display option
+// (PFMs have none unless asked). A drag is one undo step, as for the atmosphere above.
+void drawParticles(Gui& gui) {
+  ShowDocument& doc = *gui.doc;
+  AtmosphereDef a = doc.show().atmosphere;
+  ParticleSettings ps = a.particles.value_or(ParticleSettings{});
+  bool changed = false;
+  ImGuiID item = 0;
+  auto track = [&](bool edited) {
+    if (edited) {
       changed = true;
       item = ImGui::GetItemID();
     }
@@ -158,6 +171,25 @@ void drawSun(Gui& gui) {
   a.sun->color = glm::clamp(a.sun->color, glm::vec3(0.0f), glm::vec3(1.0f));
   Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
   if (!s) gui.say(s.error().str(), true);
+  track(ImGui::Checkbox("Particles", &ps.enabled));
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Visible dust where the beams light it, drifting with the air: display only (docs/rendering.md)");
+  if (ps.enabled) {
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Dust per m^3", &ps.densityPerM3, 1.0f, 0.0f, kMaxParticleDensityPerM3, "%.0f"));
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Dust size um", &ps.sizeUm, 0.5f, 1.0f, 1000.0f, "%.0f"));
+    ImGui::SetNextItemWidth(110);
+    track(ImGui::DragFloat("Dust brightness", &ps.brightness, 50.0f, 0.0f, 1e7f, "%.0f"));
+  }
+  if (changed) {
+    ps.densityPerM3 = std::clamp(ps.densityPerM3, 0.0f, kMaxParticleDensityPerM3);
+    ps.sizeUm = std::clamp(ps.sizeUm, 1.0f, 1000.0f);
+    ps.brightness = std::clamp(ps.brightness, 0.0f, 1e7f);
+    a.particles = ps;
+    Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
+    if (!s) gui.say(s.error().str(), true);
+  }
 }
 
 }  // namespace
@@ -213,6 +245,7 @@ void drawAtmosphereTab(Gui& gui) {
     Status s = doc.run(setAtmosphere(withShadows), false);
     if (!s) gui.say(s.error().str(), true);
   }
+  drawParticles(gui);
 
   ImGui::Separator();
   ImGui::TextUnformatted("View (not saved in the show)");

@@ -13,6 +13,7 @@
 #include "fixtures/beam_optics.h"
 #include "fixtures/body.h"
 #include "fixtures/pose.h"
+#include "renderer/scene/particles.h"
 #include "shaders/interface.h"
 
 namespace haze {
@@ -81,6 +82,9 @@ struct FrameState {
   // test from the lens centre. Off here so that hand-built frames (tests) keep point lights;
   // shows turn it on unless they ask for "shadows": "hard" (app/frame_builder.cpp).
   bool softShadows = false;
+  // Visible dust in the beams (docs/rendering.md, "Particles"): a display option, drawn only
+  // when particles.settings.enabled; off, the image is the radiometric one.
+  ParticleState particles;
 };
 
 }  // namespace haze
