@@ -51,7 +51,8 @@ void printText(const nlohmann::ordered_json& f) {
                 << size[1].get<double>() << " x " << size[2].get<double>() << " m\n";
     }
   }
-  for (auto [key, what] : {std::pair{"gobo_wheels", "gobo wheel"}, std::pair{"color_wheels", "colour wheel"}})
+  for (auto [key, what] : {std::pair{"gobo_wheels", "gobo wheel"}, std::pair{"color_wheels", "colour wheel"},
+                            std::pair{"animation_wheels", "animation wheel"}})
     for (size_t w = 0; w < f[key].size(); ++w) {
       const auto& wheel = f[key][w];
       std::cout << "  " << what << " " << w + 1 << " \"" << wheel["name"].get<std::string>() << "\": " << wheel["slots"].size()

@@ -39,8 +39,9 @@ constexpr const char* kUsage =
     "\"gobo_rotation\", \"iris\",\n"
     "               \"frost\", \"prism\", \"prism_rotation\", \"blades\", \"blade_rotation\", \"shutter\",\n"
     "               with --at also \"gate\": the shutter's opening (0..1) at that moment;\n"
-    "               \"gobo2\", \"gobo2_rotation\" and each spin with its angle at --at (\"gobo_spin\",\n"
-    "               \"gobo_angle\", ...) where they are in}}\n";
+    "               \"gobo2\", \"gobo2_rotation\", \"animation\", \"animation_rotation\" and each spin with\n"
+    "               its angle at --at (\"gobo_spin\", \"gobo_angle\", ..., \"animation_angle\") where they\n"
+    "               are in}}\n";
 
 }  // namespace
 

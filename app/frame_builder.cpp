@@ -130,6 +130,8 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
       ok = hashValue(ok, b.optics.goboRotationDeg);
       ok = hashValue(ok, b.optics.gobo2.get());
       ok = hashValue(ok, b.optics.gobo2RotationDeg);
+      ok = hashValue(ok, b.optics.animation.get());
+      ok = hashValue(ok, b.optics.animationAngleDeg);
       ok = hashValue(ok, b.optics.iris);
       ok = hashValue(ok, b.optics.blades);
       b.opticsKey = ok;

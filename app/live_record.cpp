@@ -54,7 +54,8 @@ Result<std::string> recordLiveCue(Show& show, const ProfileSet& profiles, const 
                 v.frost.has_value() + v.prism.has_value() + v.prismRotationDeg.has_value() + v.blades.has_value() +
                 v.bladeRotationDeg.has_value() + v.shutter.has_value() + v.gobo2.has_value() +
                 v.gobo2RotationDeg.has_value() + v.goboSpinDegS.has_value() + v.gobo2SpinDegS.has_value() +
-                v.prismSpinDegS.has_value() + v.color2.has_value() + v.ctoMired.has_value() + v.cells.size();
+                v.prismSpinDegS.has_value() + v.color2.has_value() + v.ctoMired.has_value() + v.animation.has_value() +
+                v.animationRotationDeg.has_value() + v.animationSpinDegS.has_value() + v.cells.size();
   const std::filesystem::path file = show.file;
   if (Status s = saveShow(show, file); !s) return s.error();
   return std::string(exists ? "updated" : "recorded") + " cue " + r.number + " from " + std::to_string(fixtures.size()) +

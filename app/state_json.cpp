@@ -44,6 +44,14 @@ nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profil
       o["gobo2_spin"] = tidy(a.gobo2SpinDegS);
       o["gobo2_angle"] = tidy(spunDeg(a.gobo2RotationDeg, a.gobo2SpinDegS, t));
     }
+    if (a.animation != "Open" || a.animationRotationDeg != 0.0f || a.animationSpinDegS != 0.0f) {
+      o["animation"] = a.animation;
+      o["animation_rotation"] = tidy(a.animationRotationDeg);
+    }
+    if (a.animationSpinDegS != 0.0f) {
+      o["animation_spin"] = tidy(a.animationSpinDegS);
+      o["animation_angle"] = tidy(spunDeg(a.animationRotationDeg, a.animationSpinDegS, t));
+    }
     o["iris"] = tidy(a.iris);
     if (cells > 0) {  // docs/cells.md: every cell of the profile, 1 and white where unset
       nlohmann::ordered_json list = nlohmann::ordered_json::array();

@@ -45,6 +45,9 @@ void layValues(CueValues& u, const CueValues& o) {
   lay(u.goboSpinDegS, o.goboSpinDegS);
   lay(u.gobo2SpinDegS, o.gobo2SpinDegS);
   lay(u.prismSpinDegS, o.prismSpinDegS);
+  lay(u.animation, o.animation);
+  lay(u.animationRotationDeg, o.animationRotationDeg);
+  lay(u.animationSpinDegS, o.animationSpinDegS);
   for (const auto& [k, c] : o.cells) {
     lay(u.cells[k].intensity, c.intensity);
     lay(u.cells[k].color, c.color);
@@ -109,6 +112,9 @@ void forEachValue(F f) {
   f(&CueValues::goboSpinDegS);
   f(&CueValues::gobo2SpinDegS);
   f(&CueValues::prismSpinDegS);
+  f(&CueValues::animation);
+  f(&CueValues::animationRotationDeg);
+  f(&CueValues::animationSpinDegS);
   f(&CueValues::frost);
   f(&CueValues::prismRotationDeg);
   f(&CueValues::bladeRotationDeg);
@@ -286,6 +292,9 @@ std::string attributeOutsideKind(PaletteKind kind, const CueValues& v) {
     if (v.goboSpinDegS) return "gobo_spin";
     if (v.gobo2SpinDegS) return "gobo2_spin";
     if (v.prismSpinDegS) return "prism_spin";
+    if (v.animation) return "animation";
+    if (v.animationRotationDeg) return "animation_rotation";
+    if (v.animationSpinDegS) return "animation_spin";
     if (v.iris) return "iris";
     if (v.frost) return "frost";
     if (v.prism) return "prism";
@@ -379,8 +388,8 @@ struct Checker {
       case PaletteKind::Position: return "pan and tilt only";
       case PaletteKind::Color: return "color and cell colours only";
       case PaletteKind::Beam:
-        return "beam attributes only (zoom, gobo, gobo_rotation, gobo2, gobo2_rotation, the spins, iris, frost, prism, "
-               "prism_rotation, blades, blade_rotation, shutter)";
+        return "beam attributes only (zoom, gobo, gobo_rotation, gobo2, gobo2_rotation, the spins, animation, animation_rotation, iris, "
+               "frost, prism, prism_rotation, blades, blade_rotation, shutter)";
       case PaletteKind::All: break;
     }
     return "any attribute";

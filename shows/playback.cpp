@@ -35,6 +35,9 @@ void overlayValues(Attributes& a, const CueValues& v) {
   if (v.goboSpinDegS) a.goboSpinDegS = *v.goboSpinDegS;
   if (v.gobo2SpinDegS) a.gobo2SpinDegS = *v.gobo2SpinDegS;
   if (v.prismSpinDegS) a.prismSpinDegS = *v.prismSpinDegS;
+  if (v.animation) a.animation = *v.animation;
+  if (v.animationRotationDeg) a.animationRotationDeg = *v.animationRotationDeg;
+  if (v.animationSpinDegS) a.animationSpinDegS = *v.animationSpinDegS;
   if (v.iris) a.iris = *v.iris;
   for (const auto& [k, cv] : v.cells) {
     if (k < 0) continue;
@@ -116,6 +119,7 @@ Attributes blendParts(const Attributes& from, const Attributes& to, const PartPr
   if (p.beam < 0.0) {
     a.gobo = from.gobo;
     a.gobo2 = from.gobo2;
+    a.animation = from.animation;
     a.prism = from.prism;
     a.shutter = from.shutter;
   }
@@ -124,6 +128,8 @@ Attributes blendParts(const Attributes& from, const Attributes& to, const PartPr
   a.goboSpinDegS = mix(from.goboSpinDegS, to.goboSpinDegS, p.beam);
   a.gobo2SpinDegS = mix(from.gobo2SpinDegS, to.gobo2SpinDegS, p.beam);
   a.prismSpinDegS = mix(from.prismSpinDegS, to.prismSpinDegS, p.beam);
+  a.animationRotationDeg = mix(from.animationRotationDeg, to.animationRotationDeg, p.beam);
+  a.animationSpinDegS = mix(from.animationSpinDegS, to.animationSpinDegS, p.beam);
   a.iris = mix(from.iris, to.iris, p.beam);
   a.frost = mix(from.frost, to.frost, p.beam);
   a.prismRotationDeg = mix(from.prismRotationDeg, to.prismRotationDeg, p.beam);
@@ -251,6 +257,8 @@ static void applyEffects(const Show& show, const ProfileSet& profiles, const Cue
           add(a.gobo2RotationDeg, amount, -kFree, kFree);
         } else if (at == "prism_rotation") {
           add(a.prismRotationDeg, amount, -kFree, kFree);
+        } else if (at == "animation_rotation") {
+          add(a.animationRotationDeg, amount, -kFree, kFree);
         }
       }
     }
@@ -309,6 +317,9 @@ CueValues cueValuesOf(const Attributes& a) {
   if (a.goboSpinDegS != 0.0f) v.goboSpinDegS = a.goboSpinDegS;
   if (a.gobo2SpinDegS != 0.0f) v.gobo2SpinDegS = a.gobo2SpinDegS;
   if (a.prismSpinDegS != 0.0f) v.prismSpinDegS = a.prismSpinDegS;
+  if (a.animation != neutral.animation) v.animation = a.animation;
+  if (a.animationRotationDeg != 0.0f) v.animationRotationDeg = a.animationRotationDeg;
+  if (a.animationSpinDegS != 0.0f) v.animationSpinDegS = a.animationSpinDegS;
   v.iris = a.iris;
   v.frost = a.frost;
   v.prism = a.prism;

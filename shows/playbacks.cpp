@@ -36,6 +36,9 @@ void copyAttribute(Attributes& to, const Attributes& from, LtpAttribute a, int c
     case A::PrismSpin: to.prismSpinDegS = from.prismSpinDegS; break;
     case A::Color2: to.color2 = from.color2; break;
     case A::Cto: to.ctoMired = from.ctoMired; break;
+    case A::Animation: to.animation = from.animation; break;
+    case A::AnimationRotation: to.animationRotationDeg = from.animationRotationDeg; break;
+    case A::AnimationSpin: to.animationSpinDegS = from.animationSpinDegS; break;
     case A::CellColor:
     case A::CellIntensity: {
       const size_t k = static_cast<size_t>(cell);
@@ -63,6 +66,7 @@ void effectKeys(const Show& show, const EffectDef& e, std::vector<HeldKey>& out)
   else if (e.attribute == "gobo_rotation") attributes = {A::GoboRotation};
   else if (e.attribute == "gobo2_rotation") attributes = {A::Gobo2Rotation};
   else if (e.attribute == "prism_rotation") attributes = {A::PrismRotation};
+  else if (e.attribute == "animation_rotation") attributes = {A::AnimationRotation};
   for (int id : g->fixtures)
     for (A a : attributes) out.emplace_back(id, a, 0);
 }
@@ -105,6 +109,9 @@ std::vector<HeldKey> heldKeys(int id, const CueValues& v) {
   add(v.prismSpinDegS.has_value(), A::PrismSpin);
   add(v.color2.has_value(), A::Color2);
   add(v.ctoMired.has_value(), A::Cto);
+  add(v.animation.has_value(), A::Animation);
+  add(v.animationRotationDeg.has_value(), A::AnimationRotation);
+  add(v.animationSpinDegS.has_value(), A::AnimationSpin);
   for (const auto& [k, c] : v.cells) {
     if (k < 0) continue;
     if (c.intensity) out.emplace_back(id, A::CellIntensity, k);

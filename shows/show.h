@@ -108,6 +108,9 @@ struct CueValues {
   std::optional<std::string> gobo2, color2;
   std::optional<float> ctoMired;  // docs/physics.md, "Colour temperature correction"
   std::optional<float> gobo2RotationDeg, goboSpinDegS, gobo2SpinDegS, prismSpinDegS;
+  // The animation wheel (docs/physics.md, "Animation wheel").
+  std::optional<std::string> animation;
+  std::optional<float> animationRotationDeg, animationSpinDegS;
   std::map<int, CellValues> cells;  // by cell index (0-based; the file counts from 1)
   // Beam optics beyond the gobo (docs/show-format.md).
   std::optional<float> frost, prismRotationDeg, bladeRotationDeg;

@@ -638,12 +638,14 @@ void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValu
   if (allowPalettes)
     r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "gobo2", "gobo2_rotation",
                       "color2", "cto",
-                      "gobo_spin", "gobo2_spin", "iris", "frost", "prism", "prism_rotation", "prism_spin", "blades",
+                      "gobo_spin", "gobo2_spin", "animation", "animation_rotation", "animation_spin", "iris", "frost", "prism",
+                      "prism_rotation", "prism_spin", "blades",
                       "blade_rotation", "shutter", "cells", "palettes"});
   else
     r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "gobo2", "gobo2_rotation",
                       "color2", "cto",
-                      "gobo_spin", "gobo2_spin", "iris", "frost", "prism", "prism_rotation", "prism_spin", "blades",
+                      "gobo_spin", "gobo2_spin", "animation", "animation_rotation", "animation_spin", "iris", "frost", "prism",
+                      "prism_rotation", "prism_spin", "blades",
                       "blade_rotation", "shutter", "cells"});
   double x = 0;
   auto num = [&](const char* key, double lo, double hi, const char* what, std::optional<float>& out) {
@@ -659,6 +661,8 @@ void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValu
   num("gobo_spin", -kMaxSpinDegS, kMaxSpinDegS, "a gobo spin in degrees per second", v.goboSpinDegS);
   num("gobo2_spin", -kMaxSpinDegS, kMaxSpinDegS, "a gobo spin in degrees per second", v.gobo2SpinDegS);
   num("prism_spin", -kMaxSpinDegS, kMaxSpinDegS, "a prism spin in degrees per second", v.prismSpinDegS);
+  num("animation_rotation", -kInf, kInf, "an animation wheel angle in degrees", v.animationRotationDeg);
+  num("animation_spin", -kMaxSpinDegS, kMaxSpinDegS, "an animation wheel spin in degrees per second", v.animationSpinDegS);
   num("cto", -kMaxCtoMired, kMaxCtoMired, "a colour temperature shift in mired", v.ctoMired);
   num("iris", 0.0, 1.0, "an iris", v.iris);
   glm::vec3 c{1.0f};
@@ -667,6 +671,7 @@ void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValu
   if (r.stringMember(a, p, "gobo", false, "a gobo slot name", gobo, true)) v.gobo = gobo;
   if (r.stringMember(a, p, "gobo2", false, "a slot name of the second gobo wheel", gobo, true)) v.gobo2 = gobo;
   if (r.stringMember(a, p, "color2", false, "a slot name of the second colour wheel", gobo, true)) v.color2 = gobo;
+  if (r.stringMember(a, p, "animation", false, "a slot name of the animation wheel", gobo, true)) v.animation = gobo;
   if (const json* cells = r.member(a, p, "cells", false)) readCellValues(r, *cells, p + "/cells", v);
   readOpticsValues(r, a, p, v);
   if (allowPalettes)

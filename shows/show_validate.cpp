@@ -233,6 +233,18 @@ struct Checker {
         problem(vp + "/color2", "profile \"" + name + "\" has no colour slot \"" + *v.color2 +
                                     "\" on its second colour wheel; expected one of: " + joinNames(slots));
     }
+    if (v.animation && !prof.findAnimation(*v.animation)) {
+      std::vector<std::string> slots{"\"Open\""};
+      if (!prof.animationWheels.empty())
+        for (const WheelSlot& s : prof.animationWheels[0].slots)
+          if (s.name != "Open") slots.push_back("\"" + s.name + "\"");
+      problem(vp + "/animation", "profile \"" + name + "\" has no animation slot \"" + *v.animation + "\"; expected one of: " +
+                                     joinNames(slots));
+    }
+    for (auto [key, set] : {std::pair{"animation_rotation", v.animationRotationDeg.has_value()},
+                            std::pair{"animation_spin", v.animationSpinDegS.has_value()}})
+      if (set && prof.animationWheels.empty())
+        problem(vp + "/" + key, "profile \"" + name + "\" has no animation wheel; expected no " + key);
     for (auto [key, set] : {std::pair{"gobo2_rotation", v.gobo2RotationDeg.has_value()}, std::pair{"gobo2_spin", v.gobo2SpinDegS.has_value()}})
       if (set && prof.goboWheels.size() < 2)
         problem(vp + "/" + key, "profile \"" + name + "\" has no second gobo wheel; expected no " + key);

@@ -91,6 +91,9 @@ ojson valuesJson(const CueValues& v) {
   if (v.gobo2RotationDeg) o["gobo2_rotation"] = tidy(*v.gobo2RotationDeg);
   if (v.goboSpinDegS) o["gobo_spin"] = tidy(*v.goboSpinDegS);
   if (v.gobo2SpinDegS) o["gobo2_spin"] = tidy(*v.gobo2SpinDegS);
+  if (v.animation) o["animation"] = *v.animation;
+  if (v.animationRotationDeg) o["animation_rotation"] = tidy(*v.animationRotationDeg);
+  if (v.animationSpinDegS) o["animation_spin"] = tidy(*v.animationSpinDegS);
   if (v.iris) o["iris"] = tidy(*v.iris);
   if (!v.cells.empty()) {
     ojson cells = ojson::object();

@@ -227,6 +227,24 @@ void drawInspector(Gui& gui) {
     if (track(ImGui::DragFloat(label, &spin, 0.5f, -720.0f, 720.0f, "%.1f deg/s")))
       (first ? set.goboSpinDegS : set.gobo2SpinDegS) = spin;
   }
+  // The animation wheel: its slot, the disc's angle and its spin (docs/physics.md, "Animation wheel").
+  if (!p.animationWheels.empty()) {
+    std::snprintf(label, sizeof(label), "Animation%s", mark(prog, prog && prog->animation));
+    if (ImGui::BeginCombo(label, a.animation.c_str())) {
+      for (const WheelSlot& slot : p.animationWheels[0].slots)
+        if (ImGui::Selectable(slot.name.c_str(), slot.name == a.animation)) {
+          set.animation = slot.name;
+          item = ImGui::GetItemID();
+        }
+      ImGui::EndCombo();
+    }
+    float angle = a.animationRotationDeg;
+    std::snprintf(label, sizeof(label), "Anim rot%s", mark(prog, prog && prog->animationRotationDeg));
+    if (track(ImGui::DragFloat(label, &angle, 0.5f, -3600.0f, 3600.0f, "%.1f deg"))) set.animationRotationDeg = angle;
+    float spin = a.animationSpinDegS;
+    std::snprintf(label, sizeof(label), "Anim spin%s", mark(prog, prog && prog->animationSpinDegS));
+    if (track(ImGui::DragFloat(label, &spin, 0.5f, -720.0f, 720.0f, "%.1f deg/s"))) set.animationSpinDegS = spin;
+  }
   float iris = a.iris;
   std::snprintf(label, sizeof(label), "Iris%s", mark(prog, prog && prog->iris));
   if (track(ImGui::SliderFloat(label, &iris, 0.05f, 1.0f, "%.2f"))) set.iris = iris;

@@ -24,6 +24,9 @@ void merge(CueValues& into, const CueValues& v) {
   if (v.goboSpinDegS) into.goboSpinDegS = v.goboSpinDegS;
   if (v.gobo2SpinDegS) into.gobo2SpinDegS = v.gobo2SpinDegS;
   if (v.prismSpinDegS) into.prismSpinDegS = v.prismSpinDegS;
+  if (v.animation) into.animation = v.animation;
+  if (v.animationRotationDeg) into.animationRotationDeg = v.animationRotationDeg;
+  if (v.animationSpinDegS) into.animationSpinDegS = v.animationSpinDegS;
 }
 }  // namespace
 

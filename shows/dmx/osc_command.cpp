@@ -168,8 +168,13 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
       good = one(-500, 500, v.ctoMired), expected = "one number of mired";
     } else if (attr == "gobo2_rotation") {
       good = one(-36000, 36000, v.gobo2RotationDeg), expected = "one number of degrees";
-    } else if (attr == "gobo_spin" || attr == "gobo2_spin" || attr == "prism_spin") {
-      auto& spin = attr == "gobo_spin" ? v.goboSpinDegS : attr == "gobo2_spin" ? v.gobo2SpinDegS : v.prismSpinDegS;
+    } else if (attr == "animation_rotation") {
+      good = one(-36000, 36000, v.animationRotationDeg), expected = "one number of degrees";
+    } else if (attr == "gobo_spin" || attr == "gobo2_spin" || attr == "prism_spin" || attr == "animation_spin") {
+      auto& spin = attr == "gobo_spin"    ? v.goboSpinDegS
+                   : attr == "gobo2_spin" ? v.gobo2SpinDegS
+                   : attr == "prism_spin" ? v.prismSpinDegS
+                                          : v.animationSpinDegS;
       good = one(-36000, 36000, spin), expected = "one number of degrees per second";
     } else if (attr == "color") {
       expected = "three numbers 0..1 (red, green, blue)";
@@ -183,16 +188,16 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
         }
         if (good) v.color = glm::vec3(c[0], c[1], c[2]);
       }
-    } else if (attr == "gobo" || attr == "gobo2" || attr == "color2") {
+    } else if (attr == "gobo" || attr == "gobo2" || attr == "color2" || attr == "animation") {
       expected = "one string, the slot's name";
       if (argc == 1 && (t[0] == 's' || t[0] == 'S')) {
-        (attr == "gobo" ? v.gobo : attr == "gobo2" ? v.gobo2 : v.color2) = std::string(text(argv[0]));
+        (attr == "gobo" ? v.gobo : attr == "gobo2" ? v.gobo2 : attr == "animation" ? v.animation : v.color2) = std::string(text(argv[0]));
         good = true;
       }
     } else {
       return fail(r.address + ": unknown attribute '" + attr +
                   "'; expected intensity, pan, tilt, zoom, iris, gobo, gobo_rotation, gobo2, gobo2_rotation, gobo_spin, "
-                  "gobo2_spin, prism_spin, color, color2, cto or clear");
+                  "gobo2_spin, prism_spin, animation, animation_rotation, animation_spin, color, color2, cto or clear");
     }
     if (!good) return fail(r.address + " takes " + expected + " (got type tags '" + t + "')");
     if (attr != "clear") r.command.kind = OscCommand::Kind::SetFixture;

@@ -63,6 +63,10 @@ void compareField(const Attributes& before, const CueValues& p, Same same, Diffe
   check(&CueValues::goboSpinDegS, p.goboSpinDegS, p.goboSpinDegS && *p.goboSpinDegS == before.goboSpinDegS);
   check(&CueValues::gobo2SpinDegS, p.gobo2SpinDegS, p.gobo2SpinDegS && *p.gobo2SpinDegS == before.gobo2SpinDegS);
   check(&CueValues::prismSpinDegS, p.prismSpinDegS, p.prismSpinDegS && *p.prismSpinDegS == before.prismSpinDegS);
+  check(&CueValues::animation, p.animation, p.animation && *p.animation == before.animation);
+  check(&CueValues::animationRotationDeg, p.animationRotationDeg,
+        p.animationRotationDeg && *p.animationRotationDeg == before.animationRotationDeg);
+  check(&CueValues::animationSpinDegS, p.animationSpinDegS, p.animationSpinDegS && *p.animationSpinDegS == before.animationSpinDegS);
   check(&CueValues::frost, p.frost, p.frost && *p.frost == before.frost);
   check(&CueValues::prism, p.prism, p.prism && *p.prism == before.prism);
   check(&CueValues::prismRotationDeg, p.prismRotationDeg, p.prismRotationDeg && *p.prismRotationDeg == before.prismRotationDeg);

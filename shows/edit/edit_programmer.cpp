@@ -40,6 +40,7 @@ Entries entriesOf(const Programmer& p, const std::vector<int>& ids) {
 bool finiteValues(const CueValues& v) {
   for (const auto& f : {v.intensity, v.panDeg, v.tiltDeg, v.zoomDeg, v.goboRotationDeg, v.iris, v.frost, v.prismRotationDeg,
                         v.bladeRotationDeg, v.gobo2RotationDeg, v.goboSpinDegS, v.gobo2SpinDegS, v.prismSpinDegS,
+                        v.animationRotationDeg, v.animationSpinDegS,
                         v.ctoMired})
     if (f && !std::isfinite(*f)) return false;
   if (v.shutter && !(std::isfinite(v.shutter->rateHz) && std::isfinite(v.shutter->duty))) return false;
@@ -105,6 +106,9 @@ class SetProgrammer final : public EditCommand {
       if (v.goboSpinDegS) p.goboSpinDegS = v.goboSpinDegS;
       if (v.gobo2SpinDegS) p.gobo2SpinDegS = v.gobo2SpinDegS;
       if (v.prismSpinDegS) p.prismSpinDegS = v.prismSpinDegS;
+      if (v.animation) p.animation = v.animation;
+      if (v.animationRotationDeg) p.animationRotationDeg = v.animationRotationDeg;
+      if (v.animationSpinDegS) p.animationSpinDegS = v.animationSpinDegS;
       if (v.frost) p.frost = v.frost;
       if (v.prism) p.prism = v.prism;
       if (v.prismRotationDeg) p.prismRotationDeg = v.prismRotationDeg;

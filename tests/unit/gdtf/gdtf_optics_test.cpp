@@ -262,5 +262,63 @@ TEST(GdtfOptics, ReadsFramingBladesAndClampsAPrismOfFortyFacets) {
   std::filesystem::remove_all(dir);
 }
 
+// Animation wheels (docs/physics.md, "Animation wheel"). The BMFL's wheel "Animation" carries its
+// disc (wheels/11020171.png, 256 x 256); its AnimationWheel1 channel picks the disc from DMX 20
+// (WheelSlotIndex 1, "Proportional indexing min") and AnimationWheel1PosRotate turns it at
+// -30..30 deg/s. The Alpha Spot's AnimationWheel1 names no wheel: haze adds one slot with its
+// default disc, in from DMX 255 (the ChannelSet "Animation"), and the rotate channel runs
+// -720..720 deg/s.
+TEST(GdtfAnimation, BmflImportsItsDiscAndItsChannels) {
+  auto g = loadGdtf(kGdtfDir / "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  ASSERT_TRUE(g.ok()) << g.error().str();
+  const Profile& p = *g->profile;
+  ASSERT_EQ(p.animationWheels.size(), 1u);
+  EXPECT_EQ(p.animationWheels[0].name, "Animation");
+  ASSERT_EQ(p.animationWheels[0].slots.size(), 2u);
+  EXPECT_EQ(p.animationWheels[0].slots[0].name, "Open");
+  const WheelSlot& disc = p.animationWheels[0].slots[1];
+  EXPECT_EQ(disc.name, "Animation");
+  ASSERT_NE(disc.image, nullptr);
+  EXPECT_EQ(disc.image->width, 256);
+  const DmxMode& m = p.modes.at(0);
+  const DmxChannel* slot = channelOf(m, DmxAttribute::Animation);
+  ASSERT_NE(slot, nullptr);
+  const DmxChannel* spin = channelOf(m, DmxAttribute::AnimationSpin);
+  ASSERT_NE(spin, nullptr);
+  EXPECT_FLOAT_EQ(spin->physicalFrom, -30.0f);
+  EXPECT_FLOAT_EQ(spin->physicalTo, 30.0f);
+  EXPECT_EQ(decodeOne(p, m, DmxAttribute::Animation, 0).animation, "Open");
+  EXPECT_EQ(decodeOne(p, m, DmxAttribute::Animation, 19).animation, "Open");
+  EXPECT_EQ(decodeOne(p, m, DmxAttribute::Animation, 73).animation, "Animation");
+  EXPECT_NEAR(decodeOne(p, m, DmxAttribute::AnimationSpin, 255).animationSpinDegS, 30.0f, 1e-4f);
+  // In the beam the disc's own image is drawn, not the default.
+  Attributes a;
+  a.animation = "Animation";
+  EXPECT_EQ(p.optics(a).animation, disc.image);
+}
+
+TEST(GdtfAnimation, AlphaSpotGetsTheDefaultDiscForAWheellessChannel) {
+  auto g = loadGdtf(kGdtfDir / "Clay Paky@Alpha Spot QWO 800@allWorking.gdtf");
+  ASSERT_TRUE(g.ok()) << g.error().str();
+  const Profile& p = *g->profile;
+  ASSERT_EQ(p.animationWheels.size(), 1u);
+  ASSERT_EQ(p.animationWheels[0].slots.size(), 2u);
+  EXPECT_EQ(p.animationWheels[0].slots[1].name, "Animation");
+  EXPECT_EQ(p.animationWheels[0].slots[1].image, nullptr);
+  bool warned = false;
+  for (const std::string& w : p.warnings) warned = warned || w.find("default disc") != std::string::npos;
+  EXPECT_TRUE(warned);
+  const DmxMode& m = p.modes.at(0);
+  ASSERT_NE(channelOf(m, DmxAttribute::Animation), nullptr);
+  EXPECT_EQ(decodeOne(p, m, DmxAttribute::Animation, 254).animation, "Open");
+  const Attributes in = decodeOne(p, m, DmxAttribute::Animation, 255);
+  EXPECT_EQ(in.animation, "Animation");
+  EXPECT_NE(p.optics(in).animation, nullptr);  // the default disc
+  const DmxChannel* spin = channelOf(m, DmxAttribute::AnimationSpin);
+  ASSERT_NE(spin, nullptr);
+  EXPECT_NEAR(spin->physicalTo, 719.98f, 0.01f);
+}
+
+
 }  // namespace
 }  // namespace haze

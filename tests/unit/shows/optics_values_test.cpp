@@ -107,6 +107,41 @@ TEST(OpticsValues, SecondGoboSwitchesItsRotationAndSpinsFade) {
   EXPECT_FLOAT_EQ(*cueValuesOf(a).gobo2SpinDegS, 12.0f);
 }
 
+// The animation wheel's slot, angle and spin: read and written back byte-stable, the slot
+// switching when the beam's fade starts and the angle and spin fading.
+TEST(OpticsValues, AnimationWheelReadsWritesSwitchesAndFades) {
+  ShowParse p = parseShowText(withValues(R"({"animation": "Flames", "animation_rotation": 12.5, "animation_spin": -8})"),
+                              test::validShowPath());
+  ASSERT_TRUE(p.problems.empty()) << p.problems[0].str();
+  const CueValues& v = p.show.cueLists[0].cues[0].values.at(101);
+  EXPECT_EQ(*v.animation, "Flames");
+  EXPECT_FLOAT_EQ(*v.animationRotationDeg, 12.5f);
+  EXPECT_FLOAT_EQ(*v.animationSpinDegS, -8.0f);
+  const std::string text = showToText(p.show);
+  ShowParse q = parseShowText(text, test::validShowPath());
+  ASSERT_TRUE(q.problems.empty()) << q.problems[0].str();
+  EXPECT_EQ(q.show.cueLists[0].cues[0].values.at(101), v);
+  EXPECT_EQ(showToText(q.show), text);
+  ShowParse fast = parseShowText(withValues(R"({"animation_spin": 40000})"), test::validShowPath());
+  ASSERT_FALSE(fast.problems.empty());
+  EXPECT_EQ(fast.problems[0].place, "/cue_lists/0/cues/0/values/101/animation_spin");
+  ShowParse bad = parseShowText(withValues(R"({"animation": 3})"), test::validShowPath());
+  ASSERT_FALSE(bad.problems.empty());
+  EXPECT_EQ(bad.problems[0].place, "/cue_lists/0/cues/0/values/101/animation");
+
+  Attributes from, to;
+  to.animation = "Flames";
+  to.animationRotationDeg = 40.0f;
+  to.animationSpinDegS = 20.0f;
+  const Attributes half = blendAttributes(from, to, 0.5, std::nullopt);
+  EXPECT_EQ(half.animation, "Flames");
+  EXPECT_FLOAT_EQ(half.animationRotationDeg, 20.0f);
+  EXPECT_FLOAT_EQ(half.animationSpinDegS, 10.0f);
+  EXPECT_EQ(blendAttributes(from, to, -1.0, std::nullopt).animation, "Open");
+  EXPECT_FALSE(cueValuesOf(Attributes{}).animation.has_value());
+  EXPECT_EQ(*cueValuesOf(to).animation, "Flames");
+}
+
 TEST(OpticsValues, RefusedAtTheirPlace) {
   const std::pair<const char*, const char*> bad[] = {
       {R"({"frost": 1.5})", "/frost"},
