@@ -29,6 +29,8 @@ class AtmosphereField {
   std::shared_ptr<const DensityField> at(const Show& show, const glm::vec3& venueMinM, const glm::vec3& venueMaxM,
                                          double clockS, std::vector<std::string>& warnings,
                                          const HazerSchedule& hazers = {});
+  // The field the last call returned (null: none yet, or the uniform medium).
+  const std::shared_ptr<const DensityField>& last() const { return last_; }
 
  private:
   std::unique_ptr<DensitySim> sim_;

@@ -76,4 +76,16 @@ float DensityField::maxValue() const {
   return values.empty() ? 1.0f : *std::max_element(values.begin(), values.end());
 }
 
+std::vector<float> DensityField::horizontalSlice(float yM) const {
+  std::vector<float> out;
+  if (values.empty()) return out;
+  out.reserve(static_cast<size_t>(nx) * static_cast<size_t>(nz));
+  for (int z = 0; z < nz; ++z)
+    for (int x = 0; x < nx; ++x) {
+      const glm::vec3 c = cellCentre(x, 0, z);
+      out.push_back(sample({c.x, yM, c.z}));
+    }
+  return out;
+}
+
 }  // namespace haze

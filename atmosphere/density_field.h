@@ -32,6 +32,9 @@ struct DensityField {
   float integral(const glm::vec3& a, const glm::vec3& b) const;
   float integralStepM() const;
   float maxValue() const;
+  // D on the horizontal plane y = yM at the grid's cell centres in x and z: nx * nz values, x
+  // fastest, row 0 at the lowest z (the Air tab's slice view).
+  std::vector<float> horizontalSlice(float yM) const;
 };
 
 }  // namespace haze

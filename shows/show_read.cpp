@@ -345,6 +345,8 @@ void readSun(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) 
   r.numberMember(j, p, "illuminance_lux", false, 0.0, 1e6, "an illuminance in lux", sun.illuminanceLux);
   if (const json* c = r.member(j, p, "color", false)) r.greyOrRgb(*c, p + "/color", "the sun's colour", sun.color);
   at.sun = sun;
+}
+
 // atmosphere.particles (docs/shows.md, "Particles").
 void readParticles(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) {
   if (!r.isObject(j, p, "the particles")) return;

@@ -121,6 +121,35 @@ void drawDensity(Gui& gui) {
   }
 }
 
+// The field the window shows, as a horizontal slice at a chosen height seen from above (+X to
+// the right, +Z down), grey from 0 to the slice's own maximum. At the end of
+// the tab, so that the rows above keep their places.
+void drawFieldSlice(Gui& gui) {
+  const std::shared_ptr<const DensityField>& field = gui.atmosphere.last();
+  if (!gui.doc->show().atmosphere.density || !field || field->empty()) return;
+  ImGui::Separator();
+  static float heightM = 1.0f;
+  heightM = std::clamp(heightM, field->minM.y, field->maxM.y);
+  ImGui::SetNextItemWidth(110);
+  ImGui::SliderFloat("Slice height", &heightM, field->minM.y, field->maxM.y, "%.2f m");
+  const std::vector<float> slice = field->horizontalSlice(heightM);
+  float top = 0.0f;
+  for (float v : slice) top = std::max(top, v);
+  ImGui::Text("D at %.2f m: up to %.2f (whole field %.2f)", heightM, top, field->maxValue());
+  const float side = std::min(ImGui::GetContentRegionAvail().x, 256.0f);
+  const float cell = side / static_cast<float>(std::max(field->nx, field->nz));
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  for (int z = 0; z < field->nz; ++z)
+    for (int x = 0; x < field->nx; ++x) {
+      const float v = top > 0.0f ? slice[static_cast<size_t>(z) * static_cast<size_t>(field->nx) + static_cast<size_t>(x)] / top : 0.0f;
+      const int grey = static_cast<int>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
+      const ImVec2 a(at.x + static_cast<float>(x) * cell, at.y + static_cast<float>(z) * cell);
+      draw->AddRectFilled(a, ImVec2(a.x + cell + 0.5f, a.y + cell + 0.5f), IM_COL32(grey, grey, grey, 255));
+    }
+  ImGui::Dummy(ImVec2(cell * static_cast<float>(field->nx), cell * static_cast<float>(field->nz)));
+}
+
 // The sun (docs/shows.md, "The sun"), below the density field so that the rows above keep
 // their places: switching it on for the first time adds the default sun.
 void drawSun(Gui& gui) {
@@ -130,16 +159,6 @@ void drawSun(Gui& gui) {
   ImGuiID item = 0;
   auto track = [&](bool c) {
     if (c) {
-// Visible dust in the beams (docs/shows.md, "Particles"): part of the show, a display option
-// (PFMs have none unless asked). A drag is one undo step, as for the atmosphere above.
-void drawParticles(Gui& gui) {
-  ShowDocument& doc = *gui.doc;
-  AtmosphereDef a = doc.show().atmosphere;
-  ParticleSettings ps = a.particles.value_or(ParticleSettings{});
-  bool changed = false;
-  ImGuiID item = 0;
-  auto track = [&](bool edited) {
-    if (edited) {
       changed = true;
       item = ImGui::GetItemID();
     }
@@ -171,6 +190,22 @@ void drawParticles(Gui& gui) {
   a.sun->color = glm::clamp(a.sun->color, glm::vec3(0.0f), glm::vec3(1.0f));
   Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
   if (!s) gui.say(s.error().str(), true);
+}
+
+// Visible dust in the beams (docs/shows.md, "Particles"): part of the show, a display option
+// (PFMs have none unless asked). A drag is one undo step, as for the atmosphere above.
+void drawParticles(Gui& gui) {
+  ShowDocument& doc = *gui.doc;
+  AtmosphereDef a = doc.show().atmosphere;
+  ParticleSettings ps = a.particles.value_or(ParticleSettings{});
+  bool changed = false;
+  ImGuiID item = 0;
+  auto track = [&](bool edited) {
+    if (edited) {
+      changed = true;
+      item = ImGui::GetItemID();
+    }
+  };
   track(ImGui::Checkbox("Particles", &ps.enabled));
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Visible dust where the beams light it, drifting with the air: display only (docs/rendering.md)");
@@ -298,7 +333,7 @@ void drawAtmosphereTab(Gui& gui) {
       }
       ImGui::TextWrapped("discovered %s: universes %s", d.name.c_str(), list.empty() ? "none" : list.c_str());
     }
-  }
+  }  drawFieldSlice(gui);
 }
 
 }  // namespace haze

@@ -37,5 +37,23 @@ TEST(DensityField, TrilinearBetweenCentresAndClampedOutside) {
   EXPECT_NEAR(f.integral({1, 0.3f, 0.7f}, {9, 0.3f, 0.7f}), 56.0f, 1e-3f);
 }
 
+// The Air tab's slice: D = y + 10 x + 100 z on the cell centres (linear, so trilinear is exact
+// between them) read back on a plane between two layers of centres.
+TEST(DensityField, AHorizontalSliceIsTheFieldAtTheCellCentresOfThatHeight) {
+  DensityField f = DensityField::filled(3, 4, 2, {0, 0, 0}, {3, 4, 2}, 0.0f);
+  for (int z = 0; z < 2; ++z)
+    for (int y = 0; y < 4; ++y)
+      for (int x = 0; x < 3; ++x) {
+        const glm::vec3 c = f.cellCentre(x, y, z);
+        f.values[f.index(x, y, z)] = c.y + 10.0f * c.x + 100.0f * c.z;
+      }
+  const std::vector<float> s = f.horizontalSlice(1.8f);
+  ASSERT_EQ(s.size(), 6u);
+  for (int z = 0; z < 2; ++z)
+    for (int x = 0; x < 3; ++x)
+      EXPECT_NEAR(s[static_cast<size_t>(z * 3 + x)], 1.8f + 10.0f * (x + 0.5f) + 100.0f * (z + 0.5f), 1e-4f) << x << " " << z;
+  EXPECT_TRUE(DensityField{}.horizontalSlice(1.0f).empty());
+}
+
 }  // namespace
 }  // namespace haze
