@@ -333,7 +333,8 @@ void drawAtmosphereTab(Gui& gui) {
       }
       ImGui::TextWrapped("discovered %s: universes %s", d.name.c_str(), list.empty() ? "none" : list.c_str());
     }
-  }  drawFieldSlice(gui);
+  }
+  drawFieldSlice(gui);
 }
 
 }  // namespace haze
