@@ -20,6 +20,18 @@ namespace haze {
 
 namespace {
 
+// Whether any widget of a group changed this frame, and which changed last: Gui::mergeFor
+// takes its id to make a drag one undo step.
+struct EditTracker {
+  bool changed = false;
+  ImGuiID item = 0;
+  void operator()(bool edited) {
+    if (!edited) return;
+    changed = true;
+    item = ImGui::GetItemID();
+  }
+};
+
 // Every change of the density re-runs its simulation over the warm-up, so its widgets edit a
 // draft and the show takes the draft when the widget is let go: one undo step and one
 // simulation per change, not one per frame of a drag. One window, so one draft.
@@ -155,20 +167,12 @@ void drawFieldSlice(Gui& gui) {
 void drawSun(Gui& gui) {
   ShowDocument& doc = *gui.doc;
   AtmosphereDef a = doc.show().atmosphere;
-  bool changed = false;
-  ImGuiID item = 0;
-  auto track = [&](bool c) {
-    if (c) {
-      changed = true;
-      item = ImGui::GetItemID();
-    }
-  };
+  EditTracker track;
   bool sunOn = a.sun && a.sun->enabled;
   if (ImGui::Checkbox("Sun", &sunOn)) {
     if (!a.sun) a.sun = SunDef{};
     a.sun->enabled = sunOn;
-    changed = true;
-    item = ImGui::GetItemID();
+    track(true);
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Daylight: a directional light that enters the venue through its openings (docs/shows.md)");
@@ -183,12 +187,12 @@ void drawSun(Gui& gui) {
     ImGui::SetNextItemWidth(160);
     track(ImGui::ColorEdit3("Sun colour", &a.sun->color.x, ImGuiColorEditFlags_Float));
   }
-  if (!changed) return;
+  if (!track.changed) return;
   a.sun->azimuthDeg = std::clamp(a.sun->azimuthDeg, -360.0f, 360.0f);
   a.sun->elevationDeg = std::clamp(a.sun->elevationDeg, -90.0f, 90.0f);
   a.sun->illuminanceLux = std::clamp(a.sun->illuminanceLux, 0.0f, 1e6f);
   a.sun->color = glm::clamp(a.sun->color, glm::vec3(0.0f), glm::vec3(1.0f));
-  Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
+  Status s = doc.run(setAtmosphere(a), gui.mergeFor(track.item));
   if (!s) gui.say(s.error().str(), true);
 }
 
@@ -198,14 +202,7 @@ void drawParticles(Gui& gui) {
   ShowDocument& doc = *gui.doc;
   AtmosphereDef a = doc.show().atmosphere;
   ParticleSettings ps = a.particles.value_or(ParticleSettings{});
-  bool changed = false;
-  ImGuiID item = 0;
-  auto track = [&](bool edited) {
-    if (edited) {
-      changed = true;
-      item = ImGui::GetItemID();
-    }
-  };
+  EditTracker track;
   track(ImGui::Checkbox("Particles", &ps.enabled));
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Visible dust where the beams light it, drifting with the air: display only (docs/rendering.md)");
@@ -217,12 +214,12 @@ void drawParticles(Gui& gui) {
     ImGui::SetNextItemWidth(110);
     track(ImGui::DragFloat("Dust brightness", &ps.brightness, 50.0f, 0.0f, 1e7f, "%.0f"));
   }
-  if (changed) {
+  if (track.changed) {
     ps.densityPerM3 = std::clamp(ps.densityPerM3, 0.0f, kMaxParticleDensityPerM3);
     ps.sizeUm = std::clamp(ps.sizeUm, 1.0f, 1000.0f);
     ps.brightness = std::clamp(ps.brightness, 0.0f, 1e7f);
     a.particles = ps;
-    Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
+    Status s = doc.run(setAtmosphere(a), gui.mergeFor(track.item));
     if (!s) gui.say(s.error().str(), true);
   }
 }
@@ -232,14 +229,7 @@ void drawParticles(Gui& gui) {
 void drawAtmosphereTab(Gui& gui) {
   ShowDocument& doc = *gui.doc;
   AtmosphereDef a = doc.show().atmosphere;
-  bool changed = false;
-  ImGuiID item = 0;
-  auto track = [&](bool c) {
-    if (c) {
-      changed = true;
-      item = ImGui::GetItemID();
-    }
-  };
+  EditTracker track;
   ImGui::TextUnformatted("Atmosphere");
   ImGui::SetNextItemWidth(110);
   track(ImGui::DragFloat("Scattering 1/m", &a.scattering, 0.0005f, 0.0f, 1.0f, "%.4f"));
@@ -250,8 +240,7 @@ void drawAtmosphereTab(Gui& gui) {
     for (const char* p : {"hazy", "isotropic", "hg"})
       if (ImGui::Selectable(p, a.phase == p)) {
         a.phase = p;
-        changed = true;
-        item = ImGui::GetItemID();
+        track(true);
       }
     ImGui::EndCombo();
   }
@@ -261,10 +250,10 @@ void drawAtmosphereTab(Gui& gui) {
   }
   ImGui::SetNextItemWidth(160);
   track(ImGui::DragFloat3("Ambient", &a.ambient.x, 0.005f, 0.0f, 10.0f, "%.2f"));
-  if (changed) {
+  if (track.changed) {
     a.scattering = std::max(a.scattering, 0.0f);
     a.absorption = std::max(a.absorption, 0.0f);
-    Status s = doc.run(setAtmosphere(a), gui.mergeFor(item));
+    Status s = doc.run(setAtmosphere(a), gui.mergeFor(track.item));
     if (!s) gui.say(s.error().str(), true);
   }
   drawDensity(gui);
