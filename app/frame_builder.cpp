@@ -100,7 +100,12 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
     const Profile& profile = *p->second;
     const auto s = state.find(f.id);
     const Attributes a = spunAt(s != state.end() ? s->second : Attributes{}, options.clockS);
-    if (options.bodies) poseBody(profile.housing(), f.position, f.rotationDeg, a.panDeg, a.tiltDeg, frame.bodies, &frame.bodyMeshes);
+    if (options.bodies) {
+      const size_t boxes = frame.bodies.size(), meshes = frame.bodyMeshes.size();
+      poseBody(profile.housing(), f.position, f.rotationDeg, a.panDeg, a.tiltDeg, frame.bodies, &frame.bodyMeshes);
+      for (size_t k = boxes; k < frame.bodies.size(); ++k) frame.bodies[k].fixtureId = f.id;
+      for (size_t k = meshes; k < frame.bodyMeshes.size(); ++k) frame.bodyMeshes[k].fixtureId = f.id;
+    }
     const std::optional<FrameTime>& time = options.time;
     const float gate = time ? shutterAverage(a.shutter, time->timeS, time->timeS + time->exposureS) : shutterMean(a.shutter);
     if (a.intensity * gate <= 0.0f) continue;  // a dark fixture adds nothing to any pixel

@@ -145,7 +145,8 @@ void BeamResources::ensureLightCapacity(int layers) {
 }
 
 float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float nearM, float farM, float cutoffRad,
-                                  const GpuVenue& venue, const gl::Program& program) {
+                                  const GpuVenue& venue, const GpuBodies& bodies, const ShadowCasters& casters,
+                                  const gl::Program& program) {
   glNamedFramebufferTextureLayer(shadowFbo_.id(), GL_DEPTH_ATTACHMENT, shadowMaps_.id(), 0, layer);
   glNamedFramebufferDrawBuffer(shadowFbo_.id(), GL_NONE);
   glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo_.id());
@@ -162,6 +163,7 @@ float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float ne
   glPolygonOffset(1.5f, 2.0f);
   venue.bind();
   venue.drawAll();
+  bodies.drawCasters(program.id(), casters.boxes, casters.meshes);
   glDisable(GL_POLYGON_OFFSET_FILL);
 
   // The farthest view depth the map sees; a texel at the far plane means light escapes.
@@ -179,7 +181,7 @@ float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float ne
   return std::min(farM, viewZ / std::cos(std::min(cutoffRad + glm::radians(1.0f), glm::radians(85.0f))) * 1.01f);
 }
 
-BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& venue,
+BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& venue, const GpuBodies& bodies,
                                       const gl::Program& shadowProgram) {
   BeamUpdateStats stats;
   softShadows_ = frame.softShadows;
@@ -202,6 +204,7 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
     else freeLayers.push_back(l);
   }
   const int size = settings_.lightMapSize;
+  const std::vector<BodyBound> boxBounds = bodyBounds(frame.bodies), meshBounds = bodyBounds(frame.bodyMeshes);
   drawn_.assign(static_cast<size_t>(n), 0);
   gpuBeams_.resize(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) {
@@ -230,9 +233,12 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
     const float cutoff = b.optics.cutoffHalfAngleRad();
     const float farM = farthestCornerM(b.pose.lensPosition, venue) * 1.05f;
     const glm::mat4 viewProj = shadowViewProjection(b, farM, cutoff);
-    const uint64_t shadowKey = mix(mix(b.poseKey, std::hash<float>{}(cutoff)), 2);
+    // The casters bounded against the cone (the frustum only adds its corners, where I_eff is 0).
+    const ShadowCasters casters = shadowCasters(b, cutoff, boxBounds, meshBounds);
+    const uint64_t shadowKey = mix(mix(mix(b.poseKey, std::hash<float>{}(cutoff)), 2), casters.key);
     if (shadowKeys_[static_cast<size_t>(i)] != shadowKey) {
-      reachesM_[static_cast<size_t>(i)] = renderShadow(i, viewProj, kShadowNearM, farM, cutoff, venue, shadowProgram);
+      reachesM_[static_cast<size_t>(i)] =
+          renderShadow(i, viewProj, kShadowNearM, farM, cutoff, venue, bodies, casters, shadowProgram);
       shadowKeys_[static_cast<size_t>(i)] = shadowKey;
       ++stats.shadowMapsRendered;
     }

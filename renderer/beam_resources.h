@@ -1,7 +1,8 @@
 // Per-beam GPU data: a light-map layer (I * gobo * gate over the (u, v) plane, from
 // BeamOptics::bakeLightMap), a shadow-map layer (depth from the lens), and one entry of the
 // beams storage buffer that every lighting shader reads. Light maps are re-baked only when a
-// beam's opticsKey changes, shadow maps re-rendered only when its poseKey or cone changes.
+// beam's opticsKey changes, shadow maps re-rendered only when its poseKey or cone changes or
+// a body that can lie in its cone (renderer/scene/body_shadow.h: another fixture's) moves.
 //
 // Memory is bounded (docs/rendering.md, "Large rigs"): beams with equal optics share one
 // light-map layer, and the shadow maps' layer size shrinks so that all of them fit a texel
@@ -17,7 +18,9 @@
 #include <glm/vec4.hpp>
 
 #include "renderer/gl/objects.h"
+#include "renderer/gpu_bodies.h"
 #include "renderer/gpu_venue.h"
+#include "renderer/scene/body_shadow.h"
 #include "renderer/scene/frame_state.h"
 #include "shaders/interface.h"
 
@@ -49,8 +52,10 @@ class BeamResources {
  public:
   explicit BeamResources(const BeamResourceSettings& settings);
 
-  // Brings light maps, shadow maps and the storage buffer up to date with frame.beams.
-  BeamUpdateStats update(const FrameState& frame, const GpuVenue& venue, const gl::Program& shadowProgram);
+  // Brings light maps, shadow maps and the storage buffer up to date with frame.beams; the
+  // shadow maps hold the venue and the casters among `bodies` (updated with this frame's).
+  BeamUpdateStats update(const FrameState& frame, const GpuVenue& venue, const GpuBodies& bodies,
+                         const gl::Program& shadowProgram);
 
   // The storage buffer, light maps and shadow maps at their shaders/interface.h bindings.
   void bind() const;
@@ -75,7 +80,8 @@ class BeamResources {
   void ensureLightCapacity(int layers);
   // Renders a shadow map and returns the beam's reach (see reachM).
   float renderShadow(int layer, const glm::mat4& viewProj, float nearM, float farM, float cutoffRad,
-                     const GpuVenue& venue, const gl::Program& program);
+                     const GpuVenue& venue, const GpuBodies& bodies, const ShadowCasters& casters,
+                     const gl::Program& program);
 
   BeamResourceSettings settings_;
   int maxLayers_ = 0;        // GL_MAX_ARRAY_TEXTURE_LAYERS

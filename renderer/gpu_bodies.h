@@ -36,7 +36,19 @@ class GpuBodies {
   const std::vector<Draw>& draws() const { return draws_; }
   // Every posed mesh with `program` (venue.vert.glsl): its model matrix per draw, and with
   // baseColorLocation >= 0 its albedo there; the model matrix is the identity again afterwards.
-  void drawMeshes(GLuint program, GLint baseColorLocation) const;
+  // With a camera (the depth pre-pass and the lit pass), parts wholly outside its frustum are
+  // skipped and a closed mesh seen from outside its bound has its back faces culled: the
+  // nearest surface on every ray is the same, so the picture is.
+  struct Camera {
+    glm::mat4 viewProj;
+    glm::vec3 eye;
+  };
+  void drawMeshes(GLuint program, GLint baseColorLocation, const Camera* camera = nullptr) const;
+  // Parts drawn by the last drawMeshes with a camera (the others were outside its frustum).
+  int meshesDrawn() const { return meshesDrawn_; }
+  // Depth only: the listed boxes and meshes (indices into update()'s lists) with `program`, the
+  // casters of one beam's shadow map (renderer/scene/body_shadow.h).
+  void drawCasters(GLuint program, const std::vector<int>& boxes, const std::vector<int>& meshes) const;
 
  private:
   struct MeshBuffers {
@@ -45,11 +57,18 @@ class GpuBodies {
     gl::Buffer indices{"body_mesh_indices"};
     gl::VertexArray vao{"body_mesh_vao"};
     GLsizei indexCount = 0;
+    // Every edge shared by exactly two triangles that run it both ways (a closed, consistently
+    // wound shell); outward: counter-clockwise seen from outside (positive signed volume).
+    bool closed = false;
+    bool outward = true;
+    glm::vec3 center{0.0f};  // bounding sphere in the part's frame
+    float radius = 0.0f;
   };
   struct MeshDraw {
     const MeshBuffers* buffers;
     glm::mat4 model;
     glm::vec3 albedo;
+    bool mirrored;  // the axes flip handedness: the winding seen on screen flips too
   };
 
   gl::Buffer vertices_{"body_vertices"};
@@ -59,6 +78,9 @@ class GpuBodies {
   std::vector<Draw> draws_;
   std::map<const TriangleMesh*, std::unique_ptr<MeshBuffers>> meshBuffers_;
   std::vector<MeshDraw> meshDraws_;
+  std::vector<GLint> boxFirst_;    // per box of update(): its first vertex
+  std::vector<int> meshDrawOf_;    // per mesh of update(): its meshDraws_ entry, -1 for none
+  mutable int meshesDrawn_ = 0;
 };
 
 }  // namespace haze

@@ -177,7 +177,9 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     if (timing) glEndQuery(GL_TIME_ELAPSED);
   };
   begin(0);
-  BeamUpdateStats stats = m.beams.update(frame, m.venue, m.shadowProgram);
+  // Bodies first: the beams' shadow maps draw other fixtures' bodies.
+  m.bodies.update(frame.bodies, frame.bodyMeshes);
+  BeamUpdateStats stats = m.beams.update(frame, m.venue, m.bodies, m.shadowProgram);
   times_.sunMapRendered = m.sun.update(frame, m.venue, m.shadowProgram);
   end();
   times_.shadowMapsRendered = stats.shadowMapsRendered;
@@ -216,12 +218,12 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   m.venue.bind();
   m.venue.drawAll();
-  m.bodies.update(frame.bodies, frame.bodyMeshes);
   if (!m.bodies.empty()) {
     m.bodies.bind();
     m.bodies.drawAll();
   }
-  m.bodies.drawMeshes(m.shadowProgram.id(), -1);
+  const GpuBodies::Camera bodyCamera{viewProj, frame.camera.position};
+  m.bodies.drawMeshes(m.shadowProgram.id(), -1, &bodyCamera);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
@@ -275,7 +277,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, 0);
     glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, 0);
     glProgramUniform3fv(prog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(none));
-    m.bodies.drawMeshes(prog, HAZE_LOC_SURFACE_BASE_COLOR);
+    m.bodies.drawMeshes(prog, HAZE_LOC_SURFACE_BASE_COLOR, &bodyCamera);
   }
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);

@@ -19,6 +19,7 @@
 #include "renderer/reference/cone.h"
 #include "renderer/reference/sun.h"
 #include "renderer/scene/body_hit.h"
+#include "renderer/scene/body_shadow.h"
 #include "renderer/scene/camera_basis.h"
 #include "renderer/scene/physics.h"
 
@@ -52,10 +53,16 @@ struct ActiveBeam {
   // Soft shadows (FrameState::softShadows): the lens disc's radius that V(x) sees; 0 = the
   // point test from the lens centre.
   float discRadiusM;
+  // The other fixtures' bodies that can shadow it (body_shadow.h), tested in V(x) after the
+  // venue; accels: the frame's mesh accelerations, by index into FrameState::bodyMeshes.
+  ShadowCasters casters;
+  const FrameState* frame = nullptr;
+  const std::vector<std::shared_ptr<const MeshAccel>>* accels = nullptr;
 };
 
-std::vector<ActiveBeam> activeBeams(const FrameState& frame) {
+std::vector<ActiveBeam> activeBeams(const FrameState& frame, const std::vector<std::shared_ptr<const MeshAccel>>& accels) {
   std::vector<ActiveBeam> out;
+  const std::vector<BodyBound> boxBounds = bodyBounds(frame.bodies), meshBounds = bodyBounds(frame.bodyMeshes);
   for (const BeamState& b : frame.beams) {
     if (!b.optics.distribution || !(b.optics.dimmer > 0.0f)) continue;
     const glm::vec3& c = b.optics.color;
@@ -64,17 +71,32 @@ std::vector<ActiveBeam> activeBeams(const FrameState& frame) {
     if (!(cutoff > 0.0f) || !std::isfinite(cutoff)) continue;
     // The cone test needs a convex cone; BeamOptics promises at most kMaxCutoffDeg (< 90).
     const float disc = frame.softShadows ? std::max(b.optics.lensRadiusM, 0.0f) : 0.0f;
-    out.push_back({&b, std::min(cutoff, 89.9f * kPi / 180.0f), disc});
+    const float cone = std::min(cutoff, 89.9f * kPi / 180.0f);
+    out.push_back({&b, cone, disc, shadowCasters(b, cone, boxBounds, meshBounds), &frame, &accels});
   }
   return out;
 }
 
-// V(x) for a point x at distance distM from the lens along the unit direction w.
-bool visibleFromLens(const Bvh& bvh, const glm::vec3& lens, const glm::vec3& w, float distM,
+// V(x) for a point x at distance distM from the lens along the unit direction w: the venue,
+// then the bodies of other fixtures that can lie in the beam.
+bool visibleFromLens(const Bvh& bvh, const ActiveBeam& ab, const glm::vec3& lens, const glm::vec3& w, float distM,
                      const ReferenceOptions& o) {
   const float tMax = distM - kShadowEndGapM;
   if (!(tMax > o.lensClearanceM)) return true;
-  return !bvh.anyHit(lens, w, o.lensClearanceM, tMax);
+  if (bvh.anyHit(lens, w, o.lensClearanceM, tMax)) return false;
+  if (ab.casters.empty()) return true;
+  return !anyBodyHit(ab.frame->bodies, ab.frame->bodyMeshes, *ab.accels, ab.casters.boxes, ab.casters.meshes, lens, w,
+                     o.lensClearanceM, tMax);
+}
+
+// Whether a caster's bound comes within radiusM of the segment from p along unit d, length len.
+bool castersComeNear(const ActiveBeam& ab, const glm::vec3& p, const glm::vec3& d, float len, float radiusM) {
+  for (const glm::vec4& s : ab.casters.spheres) {
+    const glm::vec3 c(s);
+    const float t = std::clamp(glm::dot(c - p, d), 0.0f, len);
+    if (glm::length(p + d * t - c) <= s.w + radiusM) return true;
+  }
+  return false;
 }
 
 // The point of the lens disc (centre lens, radius, in the plane of xb and yb) at polar
@@ -84,11 +106,12 @@ glm::vec3 discPoint(const BeamPose& pose, float radiusM, float rho, float angle)
 }
 
 // Whether the segment from the lens point p to x is free of triangles.
-bool segmentClear(const Bvh& bvh, const glm::vec3& p, const glm::vec3& x, const ReferenceOptions& o) {
+bool segmentClear(const Bvh& bvh, const ActiveBeam& ab, const glm::vec3& p, const glm::vec3& x,
+                  const ReferenceOptions& o) {
   const glm::vec3 d = x - p;
   const float len = glm::length(d);
   if (!(len > 0.0f)) return true;
-  return visibleFromLens(bvh, p, d / len, len, o);
+  return visibleFromLens(bvh, ab, p, d / len, len, o);
 }
 
 // V(x) with soft shadows (docs/physics.md, "Soft shadows"): the fraction of the lens disc
@@ -109,11 +132,13 @@ double discVisibleFraction(const Bvh& bvh, const ActiveBeam& ab, const glm::vec3
     // instead of nine rays where the haze is far from everything).
     const glm::vec3 d = x - pose.lensPosition;
     const float len = glm::length(d);
-    if (len > 0.0f && !bvh.mayComeNear(pose.lensPosition, d / len, 0.0f, len, radius)) return 1.0;
-    const bool centre = segmentClear(bvh, pose.lensPosition, x, o);
+    if (len > 0.0f && !bvh.mayComeNear(pose.lensPosition, d / len, 0.0f, len, radius) &&
+        !castersComeNear(ab, pose.lensPosition, d / len, len, radius))
+      return 1.0;
+    const bool centre = segmentClear(bvh, ab, pose.lensPosition, x, o);
     bool agree = true;
     for (int k = 0; k < 8 && agree; ++k)
-      agree = segmentClear(bvh, discPoint(pose, radius, 1.0f, k * (kPi / 4.0f)), x, o) == centre;
+      agree = segmentClear(bvh, ab, discPoint(pose, radius, 1.0f, k * (kPi / 4.0f)), x, o) == centre;
     if (agree) return centre ? 1.0 : 0.0;
   }
   const int n = std::max(samples, 1);
@@ -121,7 +146,7 @@ double discVisibleFraction(const Bvh& bvh, const ActiveBeam& ab, const glm::vec3
   int clear = 0;
   for (int k = 0; k < n; ++k) {
     const float rho = std::sqrt((k + 0.5f) / n);
-    clear += segmentClear(bvh, discPoint(pose, radius, rho, k * kGoldenAngle), x, o) ? 1 : 0;
+    clear += segmentClear(bvh, ab, discPoint(pose, radius, rho, k * kGoldenAngle), x, o) ? 1 : 0;
   }
   return static_cast<double>(clear) / n;
 }
@@ -178,7 +203,7 @@ glm::vec3 inScatterOneBeam(const Bvh& bvh, const MediumState& medium, const Acti
     glm::vec3 x, w;
     float r;
     pointAt(phi, x, w, r);
-    return visibleFromLens(bvh, lens, w, r, o);
+    return visibleFromLens(bvh, ab, lens, w, r, o);
   };
 
   // sigma_s p(a) I_eff exp(-sigma_t (r + t)) at one angle, without V and the constant 1/D.
@@ -302,7 +327,7 @@ glm::vec3 shadeSurface(const Bvh& bvh, const FrameState& frame, const std::vecto
     } else {
       const glm::vec3 d = lifted - lens;
       const float len = glm::length(d);
-      if (len > 0.0f && !visibleFromLens(bvh, lens, d / len, len + kShadowEndGapM, o)) continue;
+      if (len > 0.0f && !visibleFromLens(bvh, ab, lens, d / len, len + kShadowEndGapM, o)) continue;
     }
     const float path = frame.medium.density ? frame.medium.density->integral(lens, position) : r;
     direct += intensity * static_cast<float>(vis * cosine * std::exp(-sigmaT * path) / (r * r));
@@ -412,7 +437,8 @@ glm::vec3 cameraRayDirection(const CameraState& camera, int width, int height, f
 
 PixelRadiance radianceAlongRay(const Bvh& bvh, const FrameState& frame, const glm::vec3& origin,
                                const glm::vec3& dir, const ReferenceOptions& options) {
-  return radiance(bvh, frame, activeBeams(frame), bodyMeshAccels(frame.bodyMeshes), origin, dir, options);
+  const auto accels = bodyMeshAccels(frame.bodyMeshes);
+  return radiance(bvh, frame, activeBeams(frame, accels), accels, origin, dir, options);
 }
 
 PixelRadiance radianceAtPixel(const Bvh& bvh, const FrameState& frame, int width, int height,
@@ -432,8 +458,8 @@ ReferenceImages renderReferenceImages(const Bvh& bvh, const FrameState& frame, i
     img->pixels.assign(count, glm::vec3(0.0f));
   }
   out.depthM.assign(count, 0.0f);
-  const std::vector<ActiveBeam> beams = activeBeams(frame);
   const auto accels = bodyMeshAccels(frame.bodyMeshes);
+  const std::vector<ActiveBeam> beams = activeBeams(frame, accels);
 
   std::atomic<int> nextRow{0}, rowsDone{0};
   const std::thread::id caller = std::this_thread::get_id();

@@ -60,4 +60,22 @@ BodyHit closestBody(const std::vector<BodyBox>& boxes, const std::vector<BodyMes
   return best;
 }
 
+bool anyBodyHit(const std::vector<BodyBox>& boxes, const std::vector<BodyMesh>& meshes,
+                const std::vector<std::shared_ptr<const MeshAccel>>& accels, const std::vector<int>& boxList,
+                const std::vector<int>& meshList, const glm::vec3& origin, const glm::vec3& dir, float tMinM,
+                float tMaxM) {
+  if (!(tMaxM > tMinM)) return false;
+  const glm::vec3 start = origin + dir * tMinM;
+  for (int k : boxList)
+    if (intersectBox(boxes[static_cast<size_t>(k)], start, dir, tMaxM - tMinM).hit) return true;
+  for (int k : meshList) {
+    const size_t i = static_cast<size_t>(k);
+    if (i >= accels.size() || !accels[i]) continue;
+    const BodyMesh& m = meshes[i];
+    const glm::mat3 toLocal = glm::transpose(m.axes);
+    if (accels[i]->bvh->anyHit(toLocal * (origin - m.originM), toLocal * dir, tMinM, tMaxM)) return true;
+  }
+  return false;
+}
+
 }  // namespace haze

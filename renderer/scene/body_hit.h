@@ -42,4 +42,11 @@ BodyHit closestBody(const std::vector<BodyBox>& boxes, const std::vector<BodyMes
                     const std::vector<std::shared_ptr<const MeshAccel>>& accels, const glm::vec3& origin,
                     const glm::vec3& dir, float tMaxM);
 
+// Whether the ray (origin, unit dir) meets any of the listed bodies (indices into boxes and
+// meshes) between tMinM and tMaxM: V(x) against other fixtures' bodies (body_shadow.h).
+bool anyBodyHit(const std::vector<BodyBox>& boxes, const std::vector<BodyMesh>& meshes,
+                const std::vector<std::shared_ptr<const MeshAccel>>& accels, const std::vector<int>& boxList,
+                const std::vector<int>& meshList, const glm::vec3& origin, const glm::vec3& dir, float tMinM,
+                float tMaxM);
+
 }  // namespace haze

@@ -15,6 +15,8 @@
 #include <glm/geometric.hpp>
 
 #include "app/render_session.h"
+#include "fixtures/body.h"
+#include "fixtures/pose.h"
 #include "render_test_util.h"
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
@@ -235,6 +237,77 @@ TEST_F(BeamsVsReference, ShadowShaftFromTheSide) {
     EXPECT_LT(error, q == Quality::High ? 0.02 : 0.1) << label;
     EXPECT_LT(std::abs(bias), q == Quality::High ? 0.01 : 0.02) << label << ": the shaft is washed out or too dark";
   }
+}
+
+// The shaft scene with the sphere replaced by another fixture's body: a dark moving head hung
+// 2.2 m under the spot's lens, a little off its axis (docs/physics.md, section 7: V(x) tests the
+// bodies of every other fixture). The spot's own body, round its lens, casts nothing into it.
+FrameState bodyShaftFrame() {
+  FrameState frame = shaftFrame();
+  frame.beams[0].fixtureId = 1;
+  frame.beams[0].poseKey = frame.beams[0].opticsKey = 1;
+  const glm::vec3 lensOffset(0.0f, -0.2f, 0.0f);
+  const Body body = defaultBody(0.05f, {lensOffset}, true);
+  poseBody(body, frame.beams[0].pose.lensPosition - lensOffset, glm::vec3(0.0f), 0.0f, 0.0f, frame.bodies);
+  for (BodyBox& b : frame.bodies) b.fixtureId = 1;
+  const size_t own = frame.bodies.size();
+  poseBody(body, {0.12f, 4.6f, 0.0f}, glm::vec3(0.0f), 30.0f, 20.0f, frame.bodies);
+  for (size_t k = own; k < frame.bodies.size(); ++k) frame.bodies[k].fixtureId = 2;
+  return frame;
+}
+
+// The body's shaft seen from the side, as the sphere's above: the whole image against the
+// reference, and the haze in the shaft (the pixels the body darkens by more than a fifth in the
+// reference) neither washed out nor too dark on the GPU; both renderers must show the shaft.
+TEST_F(BeamsVsReference, AnotherFixturesBodyCastsAShaft) {
+  const FrameState frame = bodyShaftFrame();
+  FrameState bare = frame;
+  bare.bodies.clear();
+  const Venue venue = floorVenue(16.0f, 0.4f);
+  const ImageRGB open = renderReferenceImages(Bvh(venue), bare, kSmallW, kSmallH).inScattered;
+  const ImageRGB& shaded = reference("body_shaft", venue, frame, kSmallW, kSmallH).inScattered;
+  float openMax = 0.0f;
+  for (const glm::vec3& p : open.pixels) openMax = std::max(openMax, p.g);
+  std::vector<size_t> shaft;
+  for (size_t i = 0; i < open.pixels.size(); ++i)
+    if (open.pixels[i].g > 0.02f * openMax && shaded.pixels[i].g < 0.8f * open.pixels[i].g) shaft.push_back(i);
+  std::printf("[ body_shaft ] %zu shaft pixels in the reference\n", shaft.size());
+  ASSERT_GE(shaft.size(), 300u) << "the reference shows no shaft behind the body";
+  for (Quality q : {Quality::High, Quality::Default}) {
+    const char* label = q == Quality::High ? "high" : "default";
+    // Measured (see below); limits as the file's rule.
+    const Limits limits = q == Quality::High ? Limits{0.02, 0.02} : Limits{0.06, 0.05};
+    const ImageRGB gpu = run("body_shaft", std::string("body_shaft_") + label, venue, frame,
+                             renderSettingsFor(q, kSmallW, kSmallH), limits);
+    ASSERT_EQ(gpu.pixels.size(), shaded.pixels.size());
+    double bias = 0.0, error = 0.0, gpuShaft = 0.0, openShaft = 0.0;
+    for (size_t i : shaft) {
+      const double e = (double(gpu.pixels[i].g) - shaded.pixels[i].g) / shaded.pixels[i].g;
+      bias += e;
+      error += std::abs(e);
+      gpuShaft += gpu.pixels[i].g;
+      openShaft += open.pixels[i].g;
+    }
+    bias /= double(shaft.size());
+    error /= double(shaft.size());
+    std::printf("[ body_shaft_%s ] in the shaft: mean relative error %.4f, mean signed %.4f; GPU light there %.3f of "
+                "the open beam's\n", label, error, bias, gpuShaft / openShaft);
+    EXPECT_LT(gpuShaft / openShaft, 0.7) << label << ": the GPU shows no shaft behind the body";
+    EXPECT_LT(error, q == Quality::High ? 0.05 : 0.12) << label;
+    EXPECT_LT(std::abs(bias), q == Quality::High ? 0.03 : 0.04) << label << ": the shaft is washed out or too dark";
+  }
+}
+
+// Under the body, looking up at it through its shadow: the reference leaves the haze between
+// the camera and the body dark; light there is a leak.
+TEST_F(BeamsVsReference, InsideABodysShadowShaft) {
+  FrameState frame = bodyShaftFrame();
+  frame.camera.position = {0.1f, 1.5f, 0.4f};
+  frame.camera.target = {0.12f, 4.6f, 0.0f};
+  frame.camera.fovYDeg = 40.0f;
+  Limits high{0.03, 0.03, 0.001}, standard{0.09, 0.09, 0.002};
+  high.minDark = standard.minDark = 2000;
+  presets("body_shaft_inside", floorVenue(16.0f, 0.4f), frame, kSmallW, kSmallH, high, standard);
 }
 
 // Inside the shaft, under the sphere, looking up at it: every ray that meets the sphere runs in
