@@ -271,10 +271,10 @@ int runBench(const Args& args) {
     dense = std::move(*r);
   }
   std::vector<double> denseTotal, denseCpu, denseBeams, denseSurfaces, denseParticles, denseGenerate;
-  double denseColdMs = 0.0;
+  double denseColdMs = 0.0, denseColdShadowMs = 0.0;
 
   std::vector<double> total, cpu, shadow, surfaces, beams, post, meter;
-  double coldMs = 0.0;
+  double coldMs = 0.0, coldShadowMs = 0.0;
   uint64_t fragments = 0, scattering = 0, refined = 0;
   int beamsInView = 0, shadowSize = 0, lightLayers = 0;
   double beamsPerTile = 0.0;
@@ -290,6 +290,7 @@ int runBench(const Args& args) {
     const PassTimes& t = (*renderer)->lastTimes();
     if (f == 0) {  // shadow maps and light maps are made here, cached after
       coldMs = ms;
+      coldShadowMs = t.shadowMapsMs;
       warnings = (*renderer)->warnings();
       for (const std::string& w : warnings) std::fprintf(stderr, "haze bench: warning: %s\n", w.c_str());
       continue;
@@ -306,6 +307,7 @@ int runBench(const Args& args) {
         const double dms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - d0).count();
         if (pass == 0) {
           denseColdMs = dms;
+          denseColdShadowMs = dense->lastTimes().shadowMapsMs;
           continue;
         }
         denseTotal.push_back(dms);
@@ -376,6 +378,11 @@ int runBench(const Args& args) {
                      {"meshes", frame.bodyMeshes.size()},
                      {"median_frame_ms_without", without},
                      {"pass_ms_without", {{"surfaces", median(denseSurfaces)}, {"planes", median(denseBeams)}}},
+                     // The first frame draws every beam's shadow map, with the bodies that can shadow it.
+                     {"cold_frame_ms", coldMs},
+                     {"cold_frame_ms_without", denseColdMs},
+                     {"cold_shadow_maps_ms", coldShadowMs},
+                     {"cold_shadow_maps_ms_without", denseColdShadowMs},
                      {"ratio_frame", without > 0 ? with / without : 0.0},
                      {"share_of_frame", with > 0 ? (with - without) / with : 0.0}};
   } else if (dense && sun) {
@@ -443,9 +450,10 @@ int runBench(const Args& args) {
                   out["shadows_compare"]["ratio_surfaces"].get<double>());
     else if (dense && compareBodies)
       std::printf("  bodies (%zu boxes, %zu meshes): %.1f ms per frame without them (with them %.2fx, %.1f %% of the "
-                  "frame); surfaces %.1f ms without\n", frame.bodies.size(), frame.bodyMeshes.size(), median(denseTotal),
+                  "frame); surfaces %.1f ms without; cold frame %.1f ms, %.1f without (shadow maps %.1f, %.1f without)\n",
+                  frame.bodies.size(), frame.bodyMeshes.size(), median(denseTotal),
                   out["bodies"]["ratio_frame"].get<double>(), 100 * out["bodies"]["share_of_frame"].get<double>(),
-                  median(denseSurfaces));
+                  median(denseSurfaces), coldMs, denseColdMs, coldShadowMs, denseColdShadowMs);
     else if (dense && sun)
       std::printf("  with a sun: %.1f ms per frame (%.2fx), surfaces %.1f ms (%.2fx), planes and sun march %.1f ms "
                   "(%.2fx); cold %.1f ms\n", median(denseTotal), out["sun"]["ratio_frame"].get<double>(),
