@@ -72,8 +72,8 @@ struct FrameState {
   MediumState medium;
   std::vector<BeamState> beams;
   SunState sun;
-  // The fixtures' housings (docs/rendering.md, "Fixture bodies"): seen by the camera and lit by
-  // the beams, but casting no shadow (shadow maps are cached per beam; bodies move with pan).
+  // The fixtures' housings (docs/rendering.md, "Fixture bodies"): seen by the camera, lit by
+  // the beams, and shadowing every beam but their own fixture's (BodyBox::fixtureId).
   std::vector<BodyBox> bodies;
   // The parts that have a model of their own (a GDTF's mesh): its triangles, placed.
   std::vector<BodyMesh> bodyMeshes;
