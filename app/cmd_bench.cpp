@@ -147,8 +147,9 @@ constexpr const char* kBenchUsage =
     "the virtual-plane accuracy study. --density N also renders the frame through an N^3 density field\n"
     "with a hazer (the bench scene's: docs/rendering.md, \"Density\"), alternating frame by frame with the\n"
     "uniform medium, and gives the cost ratio. --no-bodies leaves the fixtures' housings out;\n"
-    "--compare-bodies also renders the frame without them, alternating frame by frame, and gives the\n"
-    "bodies' share of the frame (docs/rendering.md, \"Fixture bodies\"). --shadows soft|hard sets the\n"
+    "--compare-bodies also renders the frame without them and with every body mesh drawn whole (no\n"
+    "culling), alternating frame by frame, and gives the bodies' share of the frame both ways and their\n"
+    "cold frames (docs/rendering.md, \"Fixture bodies\"). --shadows soft|hard sets the\n"
     "shadows (default: the show's, soft for the synthetic stage); --shadows compare renders soft and hard\n"
     "alternating frame by frame and gives the soft shadows' cost ratio (docs/rendering.md, \"Soft shadows\").\n"
     "--sun also renders the frame with a sun (azimuth 250, elevation 35, 50000 lux; a show's own sun is left\n"
@@ -245,7 +246,9 @@ int runBench(const Args& args) {
     if (!r) return fail(r.error().str());
     dense = std::move(*r);
   }
-  // The same frame without bodies, the same way: what the bodies cost.
+  // The same frame without bodies, the same way: what the bodies cost; and with them drawn
+  // whole (RenderSettings::cullBodies off): what the culling saves.
+  std::unique_ptr<Renderer> unculled;
   if (compareBodies) {
     denseFrame = frame;
     denseFrame.bodies.clear();
@@ -253,6 +256,11 @@ int runBench(const Args& args) {
     auto r = Renderer::create(venue, settings);
     if (!r) return fail(r.error().str());
     dense = std::move(*r);
+    RenderSettings whole = settings;
+    whole.cullBodies = false;
+    auto u = Renderer::create(venue, whole);
+    if (!u) return fail(u.error().str());
+    unculled = std::move(*u);
   }
   // The same frame with hard shadows, with a sun or with visible dust, the same way: what the
   // soft shadows cost, what the sun costs (its shadow map, its term in the surfaces and its
@@ -271,10 +279,12 @@ int runBench(const Args& args) {
     dense = std::move(*r);
   }
   std::vector<double> denseTotal, denseCpu, denseBeams, denseSurfaces, denseParticles, denseGenerate;
-  double denseColdMs = 0.0, denseColdShadowMs = 0.0;
+  std::vector<double> unculledTotal, unculledSurfaces;
+  int bodyMeshesDrawn = 0;
+  double denseColdMs = 0.0;
 
   std::vector<double> total, cpu, shadow, surfaces, beams, post, meter;
-  double coldMs = 0.0, coldShadowMs = 0.0;
+  double coldMs = 0.0;
   uint64_t fragments = 0, scattering = 0, refined = 0;
   int beamsInView = 0, shadowSize = 0, lightLayers = 0;
   double beamsPerTile = 0.0;
@@ -290,7 +300,6 @@ int runBench(const Args& args) {
     const PassTimes& t = (*renderer)->lastTimes();
     if (f == 0) {  // shadow maps and light maps are made here, cached after
       coldMs = ms;
-      coldShadowMs = t.shadowMapsMs;
       warnings = (*renderer)->warnings();
       for (const std::string& w : warnings) std::fprintf(stderr, "haze bench: warning: %s\n", w.c_str());
       continue;
@@ -307,7 +316,6 @@ int runBench(const Args& args) {
         const double dms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - d0).count();
         if (pass == 0) {
           denseColdMs = dms;
-          denseColdShadowMs = dense->lastTimes().shadowMapsMs;
           continue;
         }
         denseTotal.push_back(dms);
@@ -318,6 +326,18 @@ int runBench(const Args& args) {
         denseGenerate.push_back(dense->lastTimes().particlesGenerateMs);
       }
     }
+    if (unculled) {
+      for (int pass = f == 1 ? 0 : 1; pass < 2; ++pass) {
+        const auto u0 = std::chrono::steady_clock::now();
+        unculled->render(frame);
+        const Metering m = unculled->meter();
+        (void)unculled->readDisplay({.exposureEv = m.ev});
+        if (pass == 0) continue;
+        unculledTotal.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - u0).count());
+        unculledSurfaces.push_back(unculled->lastTimes().surfacesMs);
+      }
+    }
+    bodyMeshesDrawn = t.bodyMeshesDrawn;
     shadow.push_back(t.shadowMapsMs);
     surfaces.push_back(t.surfacesMs);
     beams.push_back(t.beamsMs);
@@ -381,8 +401,12 @@ int runBench(const Args& args) {
                      // The first frame draws every beam's shadow map, with the bodies that can shadow it.
                      {"cold_frame_ms", coldMs},
                      {"cold_frame_ms_without", denseColdMs},
-                     {"cold_shadow_maps_ms", coldShadowMs},
-                     {"cold_shadow_maps_ms_without", denseColdShadowMs},
+                     {"meshes_in_view", bodyMeshesDrawn},
+                     // Every part drawn whole, no frustum or back-face culling.
+                     {"median_frame_ms_unculled", median(unculledTotal)},
+                     {"surfaces_ms_unculled", median(unculledSurfaces)},
+                     {"share_of_frame_unculled",
+                      median(unculledTotal) > 0 ? (median(unculledTotal) - without) / median(unculledTotal) : 0.0},
                      {"ratio_frame", without > 0 ? with / without : 0.0},
                      {"share_of_frame", with > 0 ? (with - without) / with : 0.0}};
   } else if (dense && sun) {
@@ -450,10 +474,13 @@ int runBench(const Args& args) {
                   out["shadows_compare"]["ratio_surfaces"].get<double>());
     else if (dense && compareBodies)
       std::printf("  bodies (%zu boxes, %zu meshes): %.1f ms per frame without them (with them %.2fx, %.1f %% of the "
-                  "frame); surfaces %.1f ms without; cold frame %.1f ms, %.1f without (shadow maps %.1f, %.1f without)\n",
+                  "frame, %d meshes in view); surfaces %.1f ms without; drawn whole (no culling) %.1f ms, %.1f %% of "
+                  "the frame, surfaces %.1f ms; cold frame %.1f ms, %.1f without\n",
                   frame.bodies.size(), frame.bodyMeshes.size(), median(denseTotal),
                   out["bodies"]["ratio_frame"].get<double>(), 100 * out["bodies"]["share_of_frame"].get<double>(),
-                  median(denseSurfaces), coldMs, denseColdMs, coldShadowMs, denseColdShadowMs);
+                  bodyMeshesDrawn, median(denseSurfaces), median(unculledTotal),
+                  100 * out["bodies"]["share_of_frame_unculled"].get<double>(), median(unculledSurfaces), coldMs,
+                  denseColdMs);
     else if (dense && sun)
       std::printf("  with a sun: %.1f ms per frame (%.2fx), surfaces %.1f ms (%.2fx), planes and sun march %.1f ms "
                   "(%.2fx); cold %.1f ms\n", median(denseTotal), out["sun"]["ratio_frame"].get<double>(),

@@ -223,7 +223,9 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     m.bodies.drawAll();
   }
   const GpuBodies::Camera bodyCamera{viewProj, frame.camera.position};
-  m.bodies.drawMeshes(m.shadowProgram.id(), -1, &bodyCamera);
+  const GpuBodies::Camera* cull = settings_.cullBodies ? &bodyCamera : nullptr;
+  m.bodies.drawMeshes(m.shadowProgram.id(), -1, cull);
+  times_.bodyMeshesDrawn = cull ? m.bodies.meshesDrawn() : static_cast<int>(frame.bodyMeshes.size());
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_EQUAL);
   glDepthMask(GL_FALSE);
@@ -277,7 +279,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, 0);
     glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, 0);
     glProgramUniform3fv(prog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(none));
-    m.bodies.drawMeshes(prog, HAZE_LOC_SURFACE_BASE_COLOR, &bodyCamera);
+    m.bodies.drawMeshes(prog, HAZE_LOC_SURFACE_BASE_COLOR, cull);
   }
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);

@@ -35,6 +35,10 @@ struct RenderSettings {
   // Surfaces loop only over the beams that reach their 16x16 tile (renderer/light_tiles.h);
   // off, every pixel tries every beam (same image, for tests and the bench).
   bool tiledSurfaces = true;
+  // Body meshes wholly outside the camera's frustum skipped and closed ones back-face culled in
+  // the depth and lit passes (renderer/gpu_bodies.h); off, every part is drawn whole (the same
+  // image, for tests and haze bench --compare-bodies).
+  bool cullBodies = true;
   // All beams' shadow maps together, in texels (4 bytes each): with more beams than fit at
   // shadowMapSize, every map gets smaller (renderer/beam_resources.h).
   int64_t shadowTexelBudget = int64_t{32} << 20;
@@ -61,6 +65,7 @@ struct PassTimes {
   bool sunMapRendered = false;
   int shadowMapSize = 0, lightMapLayers = 0;  // see BeamUpdateStats
   int beamsDrawn = 0;                // in-scattering footprints drawn (in view, lit)
+  int bodyMeshesDrawn = 0;           // posed body meshes drawn by the camera (in its frustum)
   double beamsPerTile = 0;           // surfaces: beams tried per lit 16x16 tile (timePasses only)
   uint64_t planeFragments = 0;       // footprint pixels times planes (or walks, when fused)
   uint64_t scatteringFragments = 0;  // of those, the ones that added light (timePasses only)
