@@ -175,5 +175,52 @@ TEST_F(BodyShadow, AFixturesOwnBodyCastsNothingIntoItsBeam) {
   EXPECT_EQ(gpuChanged, 0);
 }
 
+// The shadow maps' cache (docs/rendering.md, "Fixture bodies"): a head that pans redraws its own
+// beam's map and the maps of beams its body can lie in, no others; a dark fixture's body moving
+// through a beam redraws that beam's map alone.
+TEST_F(BodyShadow, AMoveRedrawsOnlyTheMapsItCanShadow) {
+  const Venue venue = floorVenue(16.0f, 0.4f);
+  auto r = Renderer::create(venue, renderSettingsFor(Quality::Draft, 64, 48));
+  ASSERT_TRUE(r.ok()) << r.error().str();
+  const glm::vec3 lensOffset(0.0f, -0.2f, 0.0f);
+  const Body body = defaultBody(0.05f, {lensOffset}, true);
+  // Fixtures 1 and 2 point down, 3 m apart; fixture 3 is dark, hung at `dark`.
+  auto frameWith = [&](float pan2, glm::vec3 dark) {
+    FrameState f;
+    f.camera.position = {0.0f, 3.0f, 10.0f};
+    f.camera.target = {0.0f, 2.0f, 0.0f};
+    f.medium.scattering = 0.02f;
+    const glm::vec3 pivots[2] = {{0.0f, 7.0f, 0.0f}, {3.0f, 7.0f, 0.0f}};
+    const float pans[2] = {0.0f, pan2};
+    for (int i = 0; i < 2; ++i) {
+      BeamState b = makeBeam(pivots[i], {0.0f, -1.0f, 0.0f}, 15.0f, 20.0f, 20000.0f);
+      b.pose = beamPose(pivots[i], glm::vec3(0.0f), pans[i], 0.0f, lensOffset);
+      b.fixtureId = i + 1;
+      b.opticsKey = 1;
+      b.poseKey = static_cast<uint64_t>(1000 * (i + 1) + pans[i]);
+      f.beams.push_back(b);
+      const size_t first = f.bodies.size();
+      poseBody(body, pivots[i], glm::vec3(0.0f), pans[i], 0.0f, f.bodies);
+      for (size_t k = first; k < f.bodies.size(); ++k) f.bodies[k].fixtureId = i + 1;
+    }
+    const size_t first = f.bodies.size();
+    poseBody(body, dark, glm::vec3(0.0f), 0.0f, 0.0f, f.bodies);
+    for (size_t k = first; k < f.bodies.size(); ++k) f.bodies[k].fixtureId = 3;
+    return f;
+  };
+  const glm::vec3 aside(-4.0f, 7.0f, 0.0f), underOne(0.1f, 4.5f, 0.0f);
+  auto maps = [&](const FrameState& f) {
+    (*r)->render(f);
+    return (*r)->lastTimes().shadowMapsRendered;
+  };
+  EXPECT_EQ(maps(frameWith(0.0f, aside)), 2);     // cold: both maps
+  EXPECT_EQ(maps(frameWith(0.0f, aside)), 0);     // nothing moved
+  EXPECT_EQ(maps(frameWith(40.0f, aside)), 1);    // fixture 2 pans: its own map only
+  EXPECT_EQ(maps(frameWith(40.0f, underOne)), 1); // the dark head enters beam 1: map 1 only
+  EXPECT_EQ(maps(frameWith(40.0f, underOne + glm::vec3(0.0f, 0.0f, 0.05f))), 1);  // moves in it
+  EXPECT_EQ(maps(frameWith(40.0f, aside)), 1);    // leaves it: map 1 again, without it
+  EXPECT_EQ(maps(frameWith(40.0f, aside + glm::vec3(0.0f, 0.0f, 0.5f))), 0);  // moves outside every cone
+}
+
 }  // namespace
 }  // namespace haze::test
