@@ -31,7 +31,7 @@ struct RenderSettings {
   int minSamplesPerChord = 8;
   int lattice = 0;          // see BeamPassSettings::lattice
   int sunMapSize = 2048;    // the sun's shadow map (SunPassSettings::mapSize)
-  int sunSteps = 64;        // the sun's march samples per eye ray and frame
+  int sunSteps = 96;        // the sun's march samples per eye ray and frame
   // Surfaces loop only over the beams that reach their 16x16 tile (renderer/light_tiles.h);
   // off, every pixel tries every beam (same image, for tests and the bench).
   bool tiledSurfaces = true;
