@@ -11,6 +11,7 @@
 
 #include <glm/trigonometric.hpp>
 
+#include "app/render_session.h"
 #include "fixtures/focus_blur.h"
 #include "render_test_util.h"
 #include "renderer/reference/reference.h"
