@@ -54,7 +54,7 @@ uint64_t lightKey(const BeamState& b) {
   h = mix(h, std::hash<const void*>{}(b.optics.gobo2.get()));
   h = mix(h, std::hash<const void*>{}(b.optics.animation.get()));
   for (float f : {b.optics.profileFieldAngleDeg, b.optics.fieldAngleDeg, b.optics.goboRotationDeg, b.optics.gobo2RotationDeg,
-                  b.optics.animationAngleDeg, b.optics.iris})
+                  b.optics.animationAngleDeg, b.optics.iris, b.optics.focusBlur})
     h = mix(h, std::hash<float>{}(f));
   return h == 0 ? 1 : h;  // 0 is the "nothing baked" key
 }

@@ -305,6 +305,15 @@ TEST_F(BeamsVsReference, GoboSpotFromTheSide) {
   presets("gobo_side", floorVenue(16.0f, 0.5f), goboSideFrame(), kWidth, kHeight, {0.012, 0.008}, {0.08, 0.05});
 }
 
+// The same beam with the lens defocused (docs/physics.md, "Focus": the gate blurred by 0.15 gate
+// radii, focus at an end of the default range): in the haze too the GPU's light map and the
+// reference's exact lookup agree, within the sharp gobo's limits.
+TEST_F(BeamsVsReference, DefocusedGoboSpotFromTheSide) {
+  FrameState frame = goboSideFrame();
+  frame.beams[0].optics.focusBlur = 0.15f;
+  presets("gobo_side_defocused", floorVenue(16.0f, 0.5f), frame, kWidth, kHeight, {0.012, 0.008}, {0.08, 0.05});
+}
+
 // At 1280x960 the default preset scatters at half resolution (a quarter of the fragments) with
 // a depth-aware upsample, and refines at full resolution where the half-resolution values have
 // detail: the gobo's pattern in the beam is the detail that loses most.
