@@ -73,7 +73,7 @@ struct Renderer::Impl {
                               gl::TimerQuery{"beams_time"}, gl::TimerQuery{"particles_time"}};
 
   Impl(const Venue& v, const RenderSettings& s)
-      : venue(v), beams(BeamResourceSettings{s.lightMapSize, s.shadowMapSize, s.shadowTexelBudget}) {}
+      : venue(v), beams(BeamResourceSettings{s.lightMapSize, s.shadowMapSize, s.shadowTexelBudget, s.shadowMinPyramid}) {}
 
   // (Re)makes the targets whose size is the image's; nothing else depends on it.
   Status allocateTargets(int w, int h);

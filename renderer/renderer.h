@@ -35,6 +35,10 @@ struct RenderSettings {
   // Surfaces loop only over the beams that reach their 16x16 tile (renderer/light_tiles.h);
   // off, every pixel tries every beam (same image, for tests and the bench).
   bool tiledSurfaces = true;
+  // Shadow lookups first ask the shadow maps' least-depth pyramid whether all their taps are
+  // lit (renderer/scene/depth_pyramid.h); off, every lookup takes its taps (same image, for
+  // tests and the bench).
+  bool shadowMinPyramid = true;
   // All beams' shadow maps together, in texels (4 bytes each): with more beams than fit at
   // shadowMapSize, every map gets smaller (renderer/beam_resources.h).
   int64_t shadowTexelBudget = int64_t{32} << 20;
