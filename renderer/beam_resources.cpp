@@ -173,8 +173,7 @@ float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float ne
   // Slope-scaled offset keeps lit surfaces from shadowing themselves at grazing angles.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, 2.0f);
-  venue.bind();
-  venue.drawAll();
+  venue.drawInside(viewProj);
   glDisable(GL_POLYGON_OFFSET_FILL);
 
   // The farthest view depth the map sees; a texel at the far plane means light escapes.

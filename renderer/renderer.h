@@ -39,6 +39,9 @@ struct RenderSettings {
   // lit (renderer/scene/depth_pyramid.h); off, every lookup takes its taps (same image, for
   // tests and the bench).
   bool shadowMinPyramid = true;
+  // Beams' shadow maps draw only the venue's chunks that their frustum reaches
+  // (GpuVenue::drawInside); off, every chunk (same depths, for tests and the bench).
+  bool cullVenueChunks = true;
   // All beams' shadow maps together, in texels (4 bytes each): with more beams than fit at
   // shadowMapSize, every map gets smaller (renderer/beam_resources.h).
   int64_t shadowTexelBudget = int64_t{32} << 20;
