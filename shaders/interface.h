@@ -156,7 +156,7 @@
 // ---- Light tiles --------------------------------------------------------------------------
 // The screen is cut into HAZE_TILE_PX square tiles, row-major from the bottom left; tile t's
 // mask words are tileMasks[t * maskWords + w], bit k of word w standing for beam 32 w + k.
-#define HAZE_TILE_PX 4
+#define HAZE_TILE_PX 4    // llvmpipe shades 4x4 blocks: a tile is one block's mask (docs/rendering.md)
 #define HAZE_TILE_GROUP_X 8   // tiles per compute work group (one invocation per tile)
 
 // ---- struct Beam: one element of the beams storage buffer (std430) --------------------------
