@@ -38,7 +38,7 @@
 #define HAZE_UNIT_SUN_SHADOW 15     // sun.glsl: depth seen from the sun (orthographic over the venue's box)
 #define HAZE_UNIT_SUN_PATH 16       // sun.glsl: the integral of D towards the sun, over the density grid
 #define HAZE_UNIT_PARTICLES 17      // particles.vert.glsl: RGBA32F texture buffer, two texels per particle
-#define HAZE_UNIT_SHADOW_MIN 20     // beams.glsl: the shadow maps' least depths (renderer/scene/depth_pyramid.h), R32F array, mips
+#define HAZE_UNIT_SHADOW_MIN 20     // beams.glsl: the shadow maps' least depths (renderer/scene/depth_pyramid.h), R32F array, its levels side by side in level 0
 // No image units are used.
 
 // ---- Shader storage buffer bindings -------------------------------------------------------
