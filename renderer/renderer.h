@@ -32,9 +32,16 @@ struct RenderSettings {
   int lattice = 0;          // see BeamPassSettings::lattice
   int sunMapSize = 2048;    // the sun's shadow map (SunPassSettings::mapSize)
   int sunSteps = 96;        // the sun's march samples per eye ray and frame
-  // Surfaces loop only over the beams that reach their 16x16 tile (renderer/light_tiles.h);
+  // Surfaces loop only over the beams that reach their 4x4 tile (renderer/light_tiles.h);
   // off, every pixel tries every beam (same image, for tests and the bench).
   bool tiledSurfaces = true;
+  // Shadow lookups first ask the shadow maps' least-depth pyramid whether all their taps are
+  // lit (renderer/scene/depth_pyramid.h); off, every lookup takes its taps (same image, for
+  // tests and the bench).
+  bool shadowMinPyramid = true;
+  // Beams' shadow maps draw only the venue's chunks that their frustum reaches
+  // (GpuVenue::drawInside); off, every chunk (same depths, for tests and the bench).
+  bool cullVenueChunks = true;
   // All beams' shadow maps together, in texels (4 bytes each): with more beams than fit at
   // shadowMapSize, every map gets smaller (renderer/beam_resources.h).
   int64_t shadowTexelBudget = int64_t{32} << 20;
@@ -61,7 +68,7 @@ struct PassTimes {
   bool sunMapRendered = false;
   int shadowMapSize = 0, lightMapLayers = 0;  // see BeamUpdateStats
   int beamsDrawn = 0;                // in-scattering footprints drawn (in view, lit)
-  double beamsPerTile = 0;           // surfaces: beams tried per lit 16x16 tile (timePasses only)
+  double beamsPerTile = 0;           // surfaces: beams tried per lit 4x4 tile (timePasses only)
   uint64_t planeFragments = 0;       // footprint pixels times planes (or walks, when fused)
   uint64_t scatteringFragments = 0;  // of those, the ones that added light (timePasses only)
   uint64_t refinedPixels = 0;        // rendered again at full resolution (timePasses only)
