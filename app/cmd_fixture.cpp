@@ -62,6 +62,9 @@ void printText(const nlohmann::ordered_json& f) {
     }
   // Beam optics beyond the gobo.
   if (!f["frost"].is_null()) std::cout << "  frost up to " << f["frost"]["max"].get<double>() << " deg\n";
+  if (!f["focus"].is_null())
+    std::cout << "  focus: sharp at " << f["focus"]["sharp"].get<double>() << ", blur " << f["focus"]["blur"].get<double>()
+              << " gate radii per unit of focus\n";
   for (const auto& p : f["prisms"])
     std::cout << "  prism \"" << p["name"].get<std::string>() << "\": " << p["facets"].get<int>() << " facets"
               << (p["linear"].get<bool>() ? " linear" : "") << ", " << p["deflection"].get<double>() << " deg\n";

@@ -37,7 +37,7 @@ constexpr const char* kUsage =
     "  --movement   real (default): pan, tilt and zoom at the fixtures' speeds; instant: at once\n"
     "  --json       {\"<fixture id>\": {\"intensity\", \"pan\", \"tilt\", \"color\", \"zoom\", \"gobo\", "
     "\"gobo_rotation\", \"iris\",\n"
-    "               \"frost\", \"prism\", \"prism_rotation\", \"blades\", \"blade_rotation\", \"shutter\",\n"
+    "               \"frost\", \"focus\" (where the fixture has one), \"prism\", \"prism_rotation\", \"blades\", \"blade_rotation\", \"shutter\",\n"
     "               with --at also \"gate\": the shutter's opening (0..1) at that moment;\n"
     "               \"gobo2\", \"gobo2_rotation\", \"animation\", \"animation_rotation\" and each spin with\n"
     "               its angle at --at (\"gobo_spin\", \"gobo_angle\", ..., \"animation_angle\") where they\n"

@@ -139,6 +139,7 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
       ok = hashValue(ok, b.optics.animationAngleDeg);
       ok = hashValue(ok, b.optics.iris);
       ok = hashValue(ok, b.optics.blades);
+      ok = hashValue(ok, b.optics.focusBlur);
       b.opticsKey = ok;
       fixtureBeams.push_back(std::move(b));
     }

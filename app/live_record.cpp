@@ -51,7 +51,7 @@ Result<std::string> recordLiveCue(Show& show, const ProfileSet& profiles, const 
     for (const auto& [id, v] : into.cues[*at].values)
       values += v.intensity.has_value() + v.panDeg.has_value() + v.tiltDeg.has_value() + v.color.has_value() +
                 v.zoomDeg.has_value() + v.gobo.has_value() + v.goboRotationDeg.has_value() + v.iris.has_value() +
-                v.frost.has_value() + v.prism.has_value() + v.prismRotationDeg.has_value() + v.blades.has_value() +
+                v.frost.has_value() + v.gateFocus.has_value() + v.prism.has_value() + v.prismRotationDeg.has_value() + v.blades.has_value() +
                 v.bladeRotationDeg.has_value() + v.shutter.has_value() + v.gobo2.has_value() +
                 v.gobo2RotationDeg.has_value() + v.goboSpinDegS.has_value() + v.gobo2SpinDegS.has_value() +
                 v.prismSpinDegS.has_value() + v.color2.has_value() + v.ctoMired.has_value() + v.animation.has_value() +

@@ -27,7 +27,7 @@ RenderSettings renderSettingsFor(Quality q, int width, int height) {
       // (tests/render/beams_vs_reference_test.cpp, docs/rendering.md, "Refinement").
       s = {.width = width, .height = height, .lightMapSize = 512, .shadowMapSize = 1024, .planes = 48,
            .scatterDivisor = width >= 1280 ? 2 : 1, .refineCurvature = 0.1f, .refineFloor = 2.0f, .frames = 1,
-           .minSamplesPerChord = 16, .sunMapSize = 2048, .sunSteps = 64};
+           .minSamplesPerChord = 16, .sunMapSize = 2048, .sunSteps = 96};
       break;
     case Quality::High:
     case Quality::Reference:

@@ -14,10 +14,12 @@ nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profil
   for (const auto& [id, a] : state) {
     std::optional<float> zoom = a.zoomDeg;
     size_t cells = 0;
+    bool gateFocus = false;
     if (const FixtureDef* f = show.findFixture(id))
       if (auto p = profiles.find(f->profile); p != profiles.end() && p->second) {
         if (!zoom) zoom = p->second->fieldAngleDeg;
         cells = p->second->cells.size();
+        gateFocus = p->second->hasGateFocus;
       }
     nlohmann::ordered_json o;
     o["intensity"] = tidy(a.intensity);
@@ -53,6 +55,8 @@ nlohmann::ordered_json stageStateJson(const Show& show, const ProfileSet& profil
       o["animation_angle"] = tidy(spunDeg(a.animationRotationDeg, a.animationSpinDegS, t));
     }
     o["iris"] = tidy(a.iris);
+    // The lens's focus (docs/physics.md, "Focus") where the fixture has one.
+    if (gateFocus || a.gateFocus != Attributes{}.gateFocus) o["focus"] = tidy(a.gateFocus);
     if (cells > 0) {  // docs/cells.md: every cell of the profile, 1 and white where unset
       nlohmann::ordered_json list = nlohmann::ordered_json::array();
       for (size_t k = 0; k < cells; ++k) {

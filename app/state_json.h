@@ -1,6 +1,6 @@
 // The stage state as JSON, one shape for `haze state --json` and `haze live --state-json`:
 // {"<fixture id>": {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "iris",
-// "frost", "prism", "prism_rotation", "blades", "blade_rotation", "shutter"[, "gate"]}}, zoom
+// "frost", "focus" (fixtures with one), "prism", "prism_rotation", "blades", "blade_rotation", "shutter"[, "gate"]}}, zoom
 // falling back to the profile's field angle (null when neither is known). With gateAtS, "gate"
 // is the shutter's s(t) at that time on the playback clock (docs/show-format.md, "Strobe").
 // "gobo2", "gobo2_rotation" and the spins ("gobo_spin" with "gobo_angle", the angle at gateAtS

@@ -10,6 +10,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "renderer/scene/depth_pyramid.h"
+
 namespace haze {
 namespace {
 
@@ -54,7 +56,7 @@ uint64_t lightKey(const BeamState& b) {
   h = mix(h, std::hash<const void*>{}(b.optics.gobo2.get()));
   h = mix(h, std::hash<const void*>{}(b.optics.animation.get()));
   for (float f : {b.optics.profileFieldAngleDeg, b.optics.fieldAngleDeg, b.optics.goboRotationDeg, b.optics.gobo2RotationDeg,
-                  b.optics.animationAngleDeg, b.optics.iris})
+                  b.optics.animationAngleDeg, b.optics.iris, b.optics.focusBlur})
     h = mix(h, std::hash<float>{}(f));
   return h == 0 ? 1 : h;  // 0 is the "nothing baked" key
 }
@@ -121,6 +123,17 @@ void BeamResources::ensureShadowCapacity(int beams) {
   glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTextureParameteri(shadowMaps_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
   if (!hasStorage(shadowMaps_)) shadowCapacity_ = 0;  // nothing can be shadowed: update() says so
+  // The pyramid's levels side by side (shaders/beams.glsl, uShadowMin): level 0 at the origin,
+  // the others in a column to its right.
+  shadowMin_ = gl::Texture(GL_TEXTURE_2D_ARRAY, "shadow_min");
+  const int minSize = (shadowSize_ + (1 << kDepthPyramidFirstShift) - 1) >> kDepthPyramidFirstShift;
+  glTextureStorage3D(shadowMin_.id(), 1, GL_R32F, minSize + std::max(1, minSize / 2), minSize,
+                     std::max(shadowCapacity_, 1));
+  glTextureParameteri(shadowMin_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(shadowMin_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  // Least depth 0 until a map is rendered: nothing is surely lit.
+  const float zero = 0.0f;
+  glClearTexImage(shadowMin_.id(), 0, GL_RED, GL_FLOAT, &zero);
   shadowKeys_.assign(static_cast<size_t>(shadowCapacity_), 0);  // new layers hold nothing
   reachesM_.assign(static_cast<size_t>(shadowCapacity_), 1e30f);
 }
@@ -161,8 +174,7 @@ float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float ne
   // Slope-scaled offset keeps lit surfaces from shadowing themselves at grazing angles.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, 2.0f);
-  venue.bind();
-  venue.drawAll();
+  venue.drawInside(viewProj);
   bodies.drawCasters(program.id(), casters.boxes, casters.meshes);
   glDisable(GL_POLYGON_OFFSET_FILL);
 
@@ -171,6 +183,14 @@ float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float ne
   depthScratch_.resize(static_cast<size_t>(size) * size);
   glGetTextureSubImage(shadowMaps_.id(), 0, 0, 0, layer, size, size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
                        static_cast<GLsizei>(depthScratch_.size() * sizeof(float)), depthScratch_.data());
+  const DepthPyramid pyramid = buildDepthPyramid(depthScratch_, size);
+  int originY = 0;
+  for (size_t l = 0; l < pyramid.levels.size(); ++l) {
+    const int n = pyramid.levelSize(static_cast<int>(l));
+    glTextureSubImage3D(shadowMin_.id(), 0, l == 0 ? 0 : pyramid.size, l == 0 ? 0 : originY, layer, n, n, 1, GL_RED,
+                        GL_FLOAT, pyramid.levels[l].data());
+    if (l > 0) originY += n;
+  }
   float maxDepth = 0.0f;
   for (float d : depthScratch_) maxDepth = std::max(maxDepth, d);
   if (maxDepth >= 1.0f) return farM;
@@ -278,10 +298,12 @@ void BeamResources::bind() const {
   glBindTextureUnit(HAZE_UNIT_SHADOW_MAPS, shadowMaps_.id());
   glBindTextureUnit(HAZE_UNIT_SHADOW_DEPTH, shadowMaps_.id());
   glBindSampler(HAZE_UNIT_SHADOW_DEPTH, shadowDepthSampler_.id());
+  glBindTextureUnit(HAZE_UNIT_SHADOW_MIN, shadowMin_.id());
 }
 
 void BeamResources::bindSoftShadows(unsigned int program) const {
   glProgramUniform1i(program, HAZE_LOC_SOFT_SHADOWS, softShadows_ ? 1 : 0);
+  glProgramUniform1i(program, HAZE_LOC_SHADOW_MIN_ON, settings_.shadowMinPyramid && shadowCapacity_ > 0 ? 1 : 0);
 }
 
 }  // namespace haze

@@ -35,6 +35,7 @@ struct BeamResourceSettings {
   // The shadow maps' texels together (4 bytes each): more beams than fit at shadowMapSize get
   // smaller maps, all of one size (the array's layers).
   int64_t shadowTexelBudget = int64_t{32} << 20;
+  bool shadowMinPyramid = true;  // RenderSettings::shadowMinPyramid
 };
 
 struct BeamUpdateStats {
@@ -59,8 +60,8 @@ class BeamResources {
 
   // The storage buffer, light maps and shadow maps at their shaders/interface.h bindings.
   void bind() const;
-  // The soft-shadow switch (FrameState::softShadows of the last update) on a program that
-  // includes beams.glsl and tests visibility.
+  // The soft-shadow switch (FrameState::softShadows of the last update) and the least-depth
+  // pyramid's on a program that includes beams.glsl and tests visibility.
   void bindSoftShadows(unsigned int program) const;
   int count() const { return static_cast<int>(gpuBeams_.size()); }
   const std::vector<GpuBeam>& beams() const { return gpuBeams_; }
@@ -88,6 +89,8 @@ class BeamResources {
   int shadowCapacity_ = 0, shadowSize_ = 0, lightCapacity_ = 0, ssboCapacity_ = 0;
   gl::Texture lightMaps_;
   gl::Texture shadowMaps_;
+  // Per shadow layer, its least depths over blocks (renderer/scene/depth_pyramid.h), R32F mips.
+  gl::Texture shadowMin_;
   gl::Buffer ssbo_;
   gl::Framebuffer shadowFbo_{"shadow_fbo"};
   // Reads the shadow maps' raw depths (no compare, nearest) for the soft shadows' blocker search.

@@ -73,7 +73,7 @@ struct Renderer::Impl {
                               gl::TimerQuery{"beams_time"}, gl::TimerQuery{"particles_time"}};
 
   Impl(const Venue& v, const RenderSettings& s)
-      : venue(v), beams(BeamResourceSettings{s.lightMapSize, s.shadowMapSize, s.shadowTexelBudget}) {}
+      : venue(v, s.cullVenueChunks), beams(BeamResourceSettings{s.lightMapSize, s.shadowMapSize, s.shadowTexelBudget, s.shadowMinPyramid}) {}
 
   // (Re)makes the targets whose size is the image's; nothing else depends on it.
   Status allocateTargets(int w, int h);
@@ -216,8 +216,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   glUseProgram(m.shadowProgram.id());
   glProgramUniformMatrix4fv(m.shadowProgram.id(), HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  m.venue.bind();
-  m.venue.drawAll();
+  m.venue.drawInside(viewProj);
   if (!m.bodies.empty()) {
     m.bodies.bind();
     m.bodies.drawAll();

@@ -31,10 +31,17 @@ struct RenderSettings {
   int minSamplesPerChord = 8;
   int lattice = 0;          // see BeamPassSettings::lattice
   int sunMapSize = 2048;    // the sun's shadow map (SunPassSettings::mapSize)
-  int sunSteps = 64;        // the sun's march samples per eye ray and frame
-  // Surfaces loop only over the beams that reach their 16x16 tile (renderer/light_tiles.h);
+  int sunSteps = 96;        // the sun's march samples per eye ray and frame
+  // Surfaces loop only over the beams that reach their 4x4 tile (renderer/light_tiles.h);
   // off, every pixel tries every beam (same image, for tests and the bench).
   bool tiledSurfaces = true;
+  // Shadow lookups first ask the shadow maps' least-depth pyramid whether all their taps are
+  // lit (renderer/scene/depth_pyramid.h); off, every lookup takes its taps (same image, for
+  // tests and the bench).
+  bool shadowMinPyramid = true;
+  // Beams' shadow maps draw only the venue's chunks that their frustum reaches
+  // (GpuVenue::drawInside); off, every chunk (same depths, for tests and the bench).
+  bool cullVenueChunks = true;
   // Body meshes wholly outside the camera's frustum skipped and closed ones back-face culled in
   // the depth and lit passes (renderer/gpu_bodies.h); off, every part is drawn whole (the same
   // image, for tests and haze bench --compare-bodies).
@@ -66,7 +73,7 @@ struct PassTimes {
   int shadowMapSize = 0, lightMapLayers = 0;  // see BeamUpdateStats
   int beamsDrawn = 0;                // in-scattering footprints drawn (in view, lit)
   int bodyMeshesDrawn = 0;           // posed body meshes drawn by the camera (in its frustum)
-  double beamsPerTile = 0;           // surfaces: beams tried per lit 16x16 tile (timePasses only)
+  double beamsPerTile = 0;           // surfaces: beams tried per lit 4x4 tile (timePasses only)
   uint64_t planeFragments = 0;       // footprint pixels times planes (or walks, when fused)
   uint64_t scatteringFragments = 0;  // of those, the ones that added light (timePasses only)
   uint64_t refinedPixels = 0;        // rendered again at full resolution (timePasses only)

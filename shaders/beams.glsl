@@ -13,6 +13,13 @@ layout(binding = HAZE_UNIT_SHADOW_MAPS) uniform sampler2DArrayShadow uShadowMaps
 // the soft shadows' blocker search averages.
 layout(binding = HAZE_UNIT_SHADOW_DEPTH) uniform sampler2DArray uShadowDepths;
 layout(location = HAZE_LOC_SOFT_SHADOWS) uniform int uSoftShadows;  // 0: V is the point test from the lens centre
+// The shadow maps' least depths over blocks (renderer/scene/depth_pyramid.h), the pyramid's levels
+// side by side in one level of each layer (level 0 at the origin, level m >= 1 at x = n_0 above
+// levels 1..m-1): a texel fetch's mip level may not differ from pixel to pixel on llvmpipe, which
+// takes one level per quad. Level m texel i covers the map's texels [i c, (i + 2) c),
+// c = 2^(m + HAZE_SHADOW_MIN_FIRST_SHIFT).
+layout(binding = HAZE_UNIT_SHADOW_MIN) uniform sampler2DArray uShadowMin;
+layout(location = HAZE_LOC_SHADOW_MIN_ON) uniform int uShadowMinOn;  // 0: every lookup takes all its taps
 
 // The rotation of the soft shadows' tap pattern, a fraction of a turn: the caller seeds it per
 // pixel (its noise), and every soft lookup moves it on by the golden ratio, so the samples of
@@ -30,6 +37,27 @@ vec3 beamIntensity(Beam b, vec3 x, out vec3 wl, out float r) {
   vec2 uv = vec2(dot(wl, b.xb.xyz), dot(wl, b.yb.xyz)) / cz * b.xb.w;
   float cd = texture(uLightMaps, vec3(uv * 0.5 + 0.5, b.yb.w)).r;
   return cd * b.color.rgb;
+}
+
+// Whether every shadow-map texel that a lookup within `radius` (map units) of s.xy can read, with
+// a texel of margin for the sampler's rounding, lies at depth s.z or beyond: then every tap there
+// is lit (no blocker, every compare passes) and V is exactly 1, from one texel of the pyramid
+// instead of the taps. Most lit surface points are unshadowed; the taps cost most of the surfaces.
+bool surelyLit(Beam b, vec3 s, float radius) {
+  if (uShadowMinOn == 0) return false;
+  float size = float(textureSize(uShadowDepths, 0).x);
+  ivec2 lo = ivec2(clamp(floor((s.xy - radius) * size) - 1.0, 0.0, size - 1.0));
+  ivec2 hi = ivec2(clamp(floor((s.xy + radius) * size) + 1.0, 0.0, size - 1.0));
+  int span = max(hi.x - lo.x, hi.y - lo.y) + 1;
+  // The level whose cells are at least span texels: the run [lo, hi] then lies in one texel's
+  // two cells. The top level's one texel covers the whole map.
+  int n0 = textureSize(uShadowMin, 0).y;
+  int m = min(max(0, findMSB(span - 1) + 1 - HAZE_SHADOW_MIN_FIRST_SHIFT), findMSB(n0));
+  int cell = 1 << (m + HAZE_SHADOW_MIN_FIRST_SHIFT);
+  ivec2 origin = ivec2(m > 0 ? n0 : 0, 0);
+  for (int k = 1; k < m; ++k) origin.y += max(1, n0 >> k);
+  ivec2 t = origin + min(lo / cell, ivec2(max(1, n0 >> m) - 1));
+  return texelFetch(uShadowMin, ivec3(t, int(b.zb.w)), 0).r >= s.z;
 }
 
 // Soft shadows (docs/physics.md, "Soft shadows"; docs/rendering.md, "Soft shadows"): the
@@ -58,9 +86,13 @@ float softVisibility(Beam b, vec4 c, int blockerTaps, int filterTaps) {
   float searchR = 2.0 * k * invWr;  // blockers from w_r / 3 to w_r
   float turn = 6.28318531 * gShadowTurn;
   gShadowTurn = fract(gShadowTurn + 0.618034);
+  // A CPU rasteriser (llvmpipe) runs both sides of a branch for a block of pixels, masked; only a
+  // loop ends early, once no pixel of the block wants another turn. So the taps are loops whose
+  // count is 0 where they cannot change V (surely lit; no blocker; a penumbra under a texel).
+  int searchTaps = surelyLit(b, s, searchR) ? 0 : blockerTaps;
   const float GOLDEN = 2.39996323;
   float blockers = 0.0, sumInvW = 0.0;
-  for (int i = 0; i < blockerTaps; ++i) {
+  for (int i = 0; i < searchTaps; ++i) {
     float a = float(i) * GOLDEN + turn;
     vec2 uv = s.xy + searchR * sqrt((float(i) + 0.5) / float(blockerTaps)) * vec2(cos(a), sin(a));
     float d = texture(uShadowDepths, vec3(uv, b.zb.w)).r;
@@ -74,7 +106,8 @@ float softVisibility(Beam b, vec4 c, int blockerTaps, int filterTaps) {
   if (filterR < texel) return texture(uShadowMaps, vec4(s.xy, b.zb.w, s.z));  // as sharp as the map
   float v = 0.0;
   turn += 1.0;  // not the search's pattern
-  for (int i = 0; i < filterTaps; ++i) {
+  int taps = blockers == 0.0 || filterR < texel ? 0 : filterTaps;
+  for (int i = 0; i < taps; ++i) {
     float a = float(i) * GOLDEN + turn;
     vec2 uv = s.xy + filterR * sqrt((float(i) + 0.5) / float(filterTaps)) * vec2(cos(a), sin(a));
     v += texture(uShadowMaps, vec4(uv, b.zb.w, s.z));
@@ -113,6 +146,7 @@ float beamVisibility(Beam b, vec3 x) {
   if (uSoftShadows != 0 && b.lens.x > 0.0)
     return softVisibility(b, c, SOFT_SURFACE_BLOCKER_TAPS, SOFT_SURFACE_FILTER_TAPS);
   vec2 texel = 1.0 / vec2(textureSize(uShadowMaps, 0).xy);
+  if (surelyLit(b, s, 1.5 * texel.x)) return 1.0;  // the taps' 2x2 footprints reach a texel and a half
   float v = texture(uShadowMaps, vec4(s.xy, b.zb.w, s.z)) * 0.5;
   v += texture(uShadowMaps, vec4(s.xy + vec2(0.5, 0.5) * texel, b.zb.w, s.z)) * 0.125;
   v += texture(uShadowMaps, vec4(s.xy + vec2(-0.5, 0.5) * texel, b.zb.w, s.z)) * 0.125;

@@ -38,6 +38,7 @@
 #define HAZE_UNIT_SUN_SHADOW 15     // sun.glsl: depth seen from the sun (orthographic over the venue's box)
 #define HAZE_UNIT_SUN_PATH 16       // sun.glsl: the integral of D towards the sun, over the density grid
 #define HAZE_UNIT_PARTICLES 17      // particles.vert.glsl: RGBA32F texture buffer, two texels per particle
+#define HAZE_UNIT_SHADOW_MIN 20     // beams.glsl: the shadow maps' least depths (renderer/scene/depth_pyramid.h), R32F array, its levels side by side in level 0
 // No image units are used.
 
 // ---- Shader storage buffer bindings -------------------------------------------------------
@@ -130,6 +131,9 @@
 
 // beams.glsl's soft shadows (with the surface and virtual-plane programs; 71..74 free for them)
 #define HAZE_LOC_SOFT_SHADOWS 70        // int: 1 = V(x) is the visible fraction of the lens disc
+#define HAZE_LOC_SHADOW_MIN_ON 97       // int: 1 = skip the shadow taps where HAZE_UNIT_SHADOW_MIN proves them all lit
+// The depth pyramid's finest cells, 2^shift shadow-map texels (kDepthPyramidFirstShift).
+#define HAZE_SHADOW_MIN_FIRST_SHIFT 3
 // sun.glsl (with the surface program and sun_scatter.frag.glsl; docs/rendering.md, "The sun")
 #define HAZE_LOC_SUN_ON 75           // int: 0 = no sun (nothing of the sun is evaluated)
 #define HAZE_LOC_SUN_DIRECTION 76    // vec3, unit: the way the sun's light travels
@@ -152,7 +156,7 @@
 // ---- Light tiles --------------------------------------------------------------------------
 // The screen is cut into HAZE_TILE_PX square tiles, row-major from the bottom left; tile t's
 // mask words are tileMasks[t * maskWords + w], bit k of word w standing for beam 32 w + k.
-#define HAZE_TILE_PX 16
+#define HAZE_TILE_PX 4    // llvmpipe shades 4x4 blocks: a tile is one block's mask (docs/rendering.md)
 #define HAZE_TILE_GROUP_X 8   // tiles per compute work group (one invocation per tile)
 
 // ---- struct Beam: one element of the beams storage buffer (std430) --------------------------

@@ -1,4 +1,4 @@
-// Tiled light culling (as in Forward+ renderers): for each 16x16-pixel (HAZE_TILE_PX) tile of the screen, a bit
+// Tiled light culling (as in Forward+ renderers): for each 4x4-pixel (HAZE_TILE_PX) tile of the screen, a bit
 // mask of the beams whose light cone can reach a surface seen in that tile, from the tile's depth
 // bounds in the depth pre-pass. The surface pass then loops over those beams only: a fragment
 // shader on a CPU rasteriser (llvmpipe) pays for every iteration of its light loop, however
@@ -7,7 +7,7 @@
 #include "camera.glsl"
 
 // One invocation per tile (no barriers or shared memory: on a CPU rasteriser those cost far
-// more than reading the tile's 256 depths in a loop).
+// more than reading the tile's depths in a loop).
 layout(local_size_x = HAZE_TILE_GROUP_X, local_size_y = 1) in;
 layout(std430, binding = HAZE_SSBO_TILE_MASKS) writeonly buffer TileMasks { uint tileMasks[]; };
 layout(location = HAZE_LOC_TILES_TARGET_SIZE) uniform ivec2 uTargetSize;

@@ -53,6 +53,7 @@ void layValues(CueValues& u, const CueValues& o) {
     lay(u.cells[k].color, c.color);
   }
   lay(u.frost, o.frost);
+  lay(u.gateFocus, o.gateFocus);
   lay(u.prismRotationDeg, o.prismRotationDeg);
   lay(u.bladeRotationDeg, o.bladeRotationDeg);
   lay(u.prism, o.prism);
@@ -116,6 +117,7 @@ void forEachValue(F f) {
   f(&CueValues::animationRotationDeg);
   f(&CueValues::animationSpinDegS);
   f(&CueValues::frost);
+  f(&CueValues::gateFocus);
   f(&CueValues::prismRotationDeg);
   f(&CueValues::bladeRotationDeg);
   f(&CueValues::prism);
@@ -297,6 +299,7 @@ std::string attributeOutsideKind(PaletteKind kind, const CueValues& v) {
     if (v.animationSpinDegS) return "animation_spin";
     if (v.iris) return "iris";
     if (v.frost) return "frost";
+    if (v.gateFocus) return "focus";
     if (v.prism) return "prism";
     if (v.prismRotationDeg) return "prism_rotation";
     if (v.blades) return "blades";
@@ -389,7 +392,7 @@ struct Checker {
       case PaletteKind::Color: return "color and cell colours only";
       case PaletteKind::Beam:
         return "beam attributes only (zoom, gobo, gobo_rotation, gobo2, gobo2_rotation, the spins, animation, animation_rotation, iris, "
-               "frost, prism, prism_rotation, blades, blade_rotation, shutter)";
+               "frost, focus, prism, prism_rotation, blades, blade_rotation, shutter)";
       case PaletteKind::All: break;
     }
     return "any attribute";

@@ -46,6 +46,7 @@ void overlayValues(Attributes& a, const CueValues& v) {
     if (cv.color) a.cells[static_cast<size_t>(k)].color = *cv.color;
   }
   if (v.frost) a.frost = *v.frost;
+  if (v.gateFocus) a.gateFocus = *v.gateFocus;
   if (v.prism) a.prism = *v.prism;
   if (v.prismRotationDeg) a.prismRotationDeg = *v.prismRotationDeg;
   if (v.blades) a.blades = *v.blades;
@@ -132,6 +133,7 @@ Attributes blendParts(const Attributes& from, const Attributes& to, const PartPr
   a.animationSpinDegS = mix(from.animationSpinDegS, to.animationSpinDegS, p.beam);
   a.iris = mix(from.iris, to.iris, p.beam);
   a.frost = mix(from.frost, to.frost, p.beam);
+  a.gateFocus = mix(from.gateFocus, to.gateFocus, p.beam);
   a.prismRotationDeg = mix(from.prismRotationDeg, to.prismRotationDeg, p.beam);
   a.bladeRotationDeg = mix(from.bladeRotationDeg, to.bladeRotationDeg, p.beam);
   for (size_t k = 0; k < a.blades.size(); ++k)
@@ -322,6 +324,7 @@ CueValues cueValuesOf(const Attributes& a) {
   if (a.animationSpinDegS != 0.0f) v.animationSpinDegS = a.animationSpinDegS;
   v.iris = a.iris;
   v.frost = a.frost;
+  if (a.gateFocus != neutral.gateFocus) v.gateFocus = a.gateFocus;
   v.prism = a.prism;
   v.prismRotationDeg = a.prismRotationDeg;
   v.blades = a.blades;

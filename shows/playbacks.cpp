@@ -24,6 +24,7 @@ void copyAttribute(Attributes& to, const Attributes& from, LtpAttribute a, int c
     case A::GoboRotation: to.goboRotationDeg = from.goboRotationDeg; break;
     case A::Iris: to.iris = from.iris; break;
     case A::Frost: to.frost = from.frost; break;
+    case A::GateFocus: to.gateFocus = from.gateFocus; break;
     case A::Prism: to.prism = from.prism; break;
     case A::PrismRotation: to.prismRotationDeg = from.prismRotationDeg; break;
     case A::Blades: to.blades = from.blades; break;
@@ -97,6 +98,7 @@ std::vector<HeldKey> heldKeys(int id, const CueValues& v) {
   add(v.goboRotationDeg.has_value(), A::GoboRotation);
   add(v.iris.has_value(), A::Iris);
   add(v.frost.has_value(), A::Frost);
+  add(v.gateFocus.has_value(), A::GateFocus);
   add(v.prism.has_value(), A::Prism);
   add(v.prismRotationDeg.has_value(), A::PrismRotation);
   add(v.blades.has_value(), A::Blades);

@@ -30,7 +30,7 @@ namespace haze {
 // The attributes that merge LTP between lists, one at a time (a cell's colour is one per cell).
 enum class LtpAttribute {
   Pan, Tilt, Color, Zoom, Gobo, GoboRotation, Iris, Frost, Prism, PrismRotation, Blades, BladeRotation,
-  Shutter, Gobo2, Gobo2Rotation, GoboSpin, Gobo2Spin, PrismSpin, Color2, Cto, Animation, AnimationRotation, AnimationSpin, CellColor,
+  Shutter, Gobo2, Gobo2Rotation, GoboSpin, Gobo2Spin, PrismSpin, Color2, Cto, Animation, AnimationRotation, AnimationSpin, GateFocus, CellColor,
   CellIntensity,  // HTP, but only among the lists that set it (its default is 1, not 0)
 };
 

@@ -114,6 +114,8 @@ struct CueValues {
   std::map<int, CellValues> cells;  // by cell index (0-based; the file counts from 1)
   // Beam optics beyond the gobo (docs/show-format.md).
   std::optional<float> frost, prismRotationDeg, bladeRotationDeg;
+  // "focus" in files: the lens's focus 0..1 (docs/physics.md, "Focus"), not aiming at a point.
+  std::optional<float> gateFocus;
   std::optional<std::string> prism;
   std::optional<BladeInsertions> blades;
   std::optional<Shutter> shutter;

@@ -551,11 +551,13 @@ void readCellValues(Reader& r, const json& cells, const std::string& cp, CueValu
   }
 }
 
-// frost, prism, prism_rotation, blades, blade_rotation, shutter (docs/show-format.md).
+// frost, focus, prism, prism_rotation, blades, blade_rotation, shutter (docs/show-format.md).
 void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues& v) {
   double x = 0;
   if (const json* j = r.member(a, p, "frost", false))
     if (r.number(*j, p + "/frost", 0.0, 1.0, "a frost (0..1)", x)) v.frost = static_cast<float>(x);
+  if (const json* j = r.member(a, p, "focus", false))
+    if (r.number(*j, p + "/focus", 0.0, 1.0, "a focus (0..1 over the lens's range)", x)) v.gateFocus = static_cast<float>(x);
   if (const json* j = r.member(a, p, "prism_rotation", false))
     if (r.number(*j, p + "/prism_rotation", -kInf, kInf, "a prism rotation in degrees", x)) v.prismRotationDeg = static_cast<float>(x);
   if (const json* j = r.member(a, p, "blade_rotation", false))
@@ -640,14 +642,14 @@ void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValu
   if (allowPalettes)
     r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "gobo2", "gobo2_rotation",
                       "color2", "cto",
-                      "gobo_spin", "gobo2_spin", "animation", "animation_rotation", "animation_spin", "iris", "frost", "prism",
-                      "prism_rotation", "prism_spin", "blades",
+                      "gobo_spin", "gobo2_spin", "animation", "animation_rotation", "animation_spin", "iris", "frost", "focus",
+                      "prism", "prism_rotation", "prism_spin", "blades",
                       "blade_rotation", "shutter", "cells", "palettes"});
   else
     r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "gobo2", "gobo2_rotation",
                       "color2", "cto",
-                      "gobo_spin", "gobo2_spin", "animation", "animation_rotation", "animation_spin", "iris", "frost", "prism",
-                      "prism_rotation", "prism_spin", "blades",
+                      "gobo_spin", "gobo2_spin", "animation", "animation_rotation", "animation_spin", "iris", "frost", "focus",
+                      "prism", "prism_rotation", "prism_spin", "blades",
                       "blade_rotation", "shutter", "cells"});
   double x = 0;
   auto num = [&](const char* key, double lo, double hi, const char* what, std::optional<float>& out) {

@@ -202,6 +202,8 @@ struct Checker {
   void optics(const std::string& vp, const CueValues& v, const Profile& prof, const std::string& name) {
     if (v.frost && *v.frost > 0.0f && !prof.hasFrost)
       problem(vp + "/frost", "profile \"" + name + "\" has no frost; expected no frost value (or 0)");
+    if (v.gateFocus && !prof.hasGateFocus)
+      problem(vp + "/focus", "profile \"" + name + "\" has no focus; expected no focus value");
     if (v.prism && *v.prism != "Open" && !prof.findPrism(*v.prism)) {
       std::vector<std::string> names{"\"Open\""};
       for (const PrismSpec& p : prof.prisms) names.push_back("\"" + p.name + "\"");

@@ -106,6 +106,7 @@ ojson valuesJson(const CueValues& v) {
     o["cells"] = std::move(cells);
   }
   if (v.frost) o["frost"] = tidy(*v.frost);
+  if (v.gateFocus) o["focus"] = tidy(*v.gateFocus);
   if (v.prism) o["prism"] = *v.prism;
   if (v.prismRotationDeg) o["prism_rotation"] = tidy(*v.prismRotationDeg);
   if (v.prismSpinDegS) o["prism_spin"] = tidy(*v.prismSpinDegS);

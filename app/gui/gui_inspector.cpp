@@ -1,7 +1,8 @@
 // The inspector for the selection (one or many fixtures): name, position and mounting rotation
 // (one fixture), pan and tilt with focus to point, and the attributes: intensity, colour (picker
 // and the profile's colour wheel, the second colour wheel, CTO), zoom, gobo, gobo rotation and
-// spin (both gobo wheels), iris, shutter, and frost, prism and blades where the profile has them.
+// spin (both gobo wheels), iris, shutter, and frost, focus (the lens), prism and blades where the
+// profile has them.
 // Shown values are the first selected fixture's on stage; a change sets that attribute of every
 // selected fixture in the programmer (a drag is one undo step). "*" marks attributes the
 // programmer holds.
@@ -45,6 +46,12 @@ void inspectOptics(const Profile& p, const Attributes& a, const CueValues* prog,
     float frost = a.frost;
     std::snprintf(label, sizeof(label), "Frost%s", mark(prog, prog && prog->frost));
     if (track(ImGui::SliderFloat(label, &frost, 0.0f, 1.0f, "%.2f"))) set.frost = frost;
+  }
+  // The lens's focus (docs/physics.md, "Focus"); the F key's aiming is another thing.
+  if (p.hasGateFocus) {
+    float focus = a.gateFocus;
+    std::snprintf(label, sizeof(label), "Focus%s", mark(prog, prog && prog->gateFocus));
+    if (track(ImGui::SliderFloat(label, &focus, 0.0f, 1.0f, "%.2f"))) set.gateFocus = focus;
   }
   if (!p.prisms.empty()) {
     std::snprintf(label, sizeof(label), "Prism%s", mark(prog, prog && prog->prism));

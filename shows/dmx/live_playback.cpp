@@ -27,6 +27,7 @@ void merge(CueValues& into, const CueValues& v) {
   if (v.animation) into.animation = v.animation;
   if (v.animationRotationDeg) into.animationRotationDeg = v.animationRotationDeg;
   if (v.animationSpinDegS) into.animationSpinDegS = v.animationSpinDegS;
+  if (v.gateFocus) into.gateFocus = v.gateFocus;
 }
 }  // namespace
 

@@ -156,6 +156,8 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
       good = one(0, 1, v.intensity), expected = "one number 0..1";
     } else if (attr == "iris") {
       good = one(0, 1, v.iris), expected = "one number 0..1";
+    } else if (attr == "focus") {
+      good = one(0, 1, v.gateFocus), expected = "one number 0..1";
     } else if (attr == "pan") {
       good = one(-3600, 3600, v.panDeg), expected = "one number of degrees";
     } else if (attr == "tilt") {
@@ -196,7 +198,7 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
       }
     } else {
       return fail(r.address + ": unknown attribute '" + attr +
-                  "'; expected intensity, pan, tilt, zoom, iris, gobo, gobo_rotation, gobo2, gobo2_rotation, gobo_spin, "
+                  "'; expected intensity, pan, tilt, zoom, iris, focus, gobo, gobo_rotation, gobo2, gobo2_rotation, gobo_spin, "
                   "gobo2_spin, prism_spin, animation, animation_rotation, animation_spin, color, color2, cto or clear");
     }
     if (!good) return fail(r.address + " takes " + expected + " (got type tags '" + t + "')");

@@ -68,6 +68,7 @@ void compareField(const Attributes& before, const CueValues& p, Same same, Diffe
         p.animationRotationDeg && *p.animationRotationDeg == before.animationRotationDeg);
   check(&CueValues::animationSpinDegS, p.animationSpinDegS, p.animationSpinDegS && *p.animationSpinDegS == before.animationSpinDegS);
   check(&CueValues::frost, p.frost, p.frost && *p.frost == before.frost);
+  check(&CueValues::gateFocus, p.gateFocus, p.gateFocus && *p.gateFocus == before.gateFocus);
   check(&CueValues::prism, p.prism, p.prism && *p.prism == before.prism);
   check(&CueValues::prismRotationDeg, p.prismRotationDeg, p.prismRotationDeg && *p.prismRotationDeg == before.prismRotationDeg);
   check(&CueValues::blades, p.blades, p.blades && *p.blades == before.blades);

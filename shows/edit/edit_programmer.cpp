@@ -38,7 +38,7 @@ Entries entriesOf(const Programmer& p, const std::vector<int>& ids) {
 }
 
 bool finiteValues(const CueValues& v) {
-  for (const auto& f : {v.intensity, v.panDeg, v.tiltDeg, v.zoomDeg, v.goboRotationDeg, v.iris, v.frost, v.prismRotationDeg,
+  for (const auto& f : {v.intensity, v.panDeg, v.tiltDeg, v.zoomDeg, v.goboRotationDeg, v.iris, v.frost, v.gateFocus, v.prismRotationDeg,
                         v.bladeRotationDeg, v.gobo2RotationDeg, v.goboSpinDegS, v.gobo2SpinDegS, v.prismSpinDegS,
                         v.animationRotationDeg, v.animationSpinDegS,
                         v.ctoMired})
@@ -110,6 +110,7 @@ class SetProgrammer final : public EditCommand {
       if (v.animationRotationDeg) p.animationRotationDeg = v.animationRotationDeg;
       if (v.animationSpinDegS) p.animationSpinDegS = v.animationSpinDegS;
       if (v.frost) p.frost = v.frost;
+      if (v.gateFocus) p.gateFocus = v.gateFocus;
       if (v.prism) p.prism = v.prism;
       if (v.prismRotationDeg) p.prismRotationDeg = v.prismRotationDeg;
       if (v.blades) p.blades = v.blades;

@@ -98,6 +98,11 @@ TEST(Osc, FixtureAttributes) {
   const OscParse g = parseOscCommand(osc("/haze/fixture/1/gobo", {{'s', 0, "Stars"}}));
   EXPECT_EQ(*g.command.values.gobo, "Stars");
   EXPECT_EQ(parseOscCommand(osc("/haze/fixture/1/clear")).command.kind, OscCommand::Kind::ClearFixture);
+  // The lens's focus, 0..1 (docs/physics.md, "Focus").
+  const OscParse f = parseOscCommand(osc("/haze/fixture/3/focus", {{'f', 0.25}}));
+  ASSERT_TRUE(f.ok) << f.error;
+  EXPECT_FLOAT_EQ(*f.command.values.gateFocus, 0.25f);
+  EXPECT_FALSE(parseOscCommand(osc("/haze/fixture/3/focus", {{'f', 1.5}})).ok);
 }
 
 TEST(Osc, BadMessagesAreRefusedWithAReason) {

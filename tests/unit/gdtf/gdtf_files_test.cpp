@@ -190,11 +190,12 @@ TEST(GdtfFiles, BmflSpotModesWheelsAndRanges) {
   EXPECT_LT(red.color->g, 0.2f);
   EXPECT_LT(red.color->b, 0.2f);
   EXPECT_EQ(m1.channels[6].attribute, DmxAttribute::ColorWheel);
-  // Attributes haze does not draw (focus, animation...) are read past and listed once; the
-  // shutter is read (gdtf_optics_test.cpp).
+  // Focus1 is read (gdtf_optics_test.cpp, GdtfFocus), so it is not among the attributes listed
+  // as read past; the shutter is read too.
   int focusWarnings = 0;
   for (const auto& w : g->warnings) focusWarnings += w.find("'Focus1' is not used") != std::string::npos;
-  EXPECT_EQ(focusWarnings, 1);
+  EXPECT_EQ(focusWarnings, 0);
+  EXPECT_TRUE(p.hasGateFocus);
   EXPECT_EQ(m1.channels[38].attribute, DmxAttribute::Shutter);  // Shutter1 at offset 39
 }
 

@@ -320,5 +320,36 @@ TEST(GdtfAnimation, AlphaSpotGetsTheDefaultDiscForAWheellessChannel) {
 }
 
 
+// The BMFL's Focus1 (description.xml: mode 1 at offsets 36,37, 16 bits, "Focus far" at 0 to
+// "Focus near" at 65535; mode 2 at offset 30, 8 bits) gives the profile a focus with haze's
+// defaults, and its DMX value runs 0..1 over the lens's travel (docs/gdtf.md, "Focus").
+TEST(GdtfFocus, BmflFocus1DecodesOverTheLensesTravel) {
+  auto g = loadGdtf(kGdtfDir / "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  ASSERT_TRUE(g.ok()) << g.error().str();
+  const Profile& p = *g->profile;
+  EXPECT_TRUE(p.hasGateFocus);
+  EXPECT_FLOAT_EQ(p.focusSharp, kDefaultFocusSharp);
+  EXPECT_FLOAT_EQ(p.focusBlur, kDefaultFocusBlur);
+  for (const DmxMode& m : p.modes) {
+    int coarse = -1, fine = -1;
+    for (size_t i = 0; i < m.channels.size(); ++i)
+      if (m.channels[i].attribute == DmxAttribute::GateFocus) (m.channels[i].byte == 0 ? coarse : fine) = static_cast<int>(i);
+    ASSERT_GE(coarse, 0) << m.name;
+    std::vector<uint8_t> dmx(m.channels.size(), 0);
+    EXPECT_FLOAT_EQ(decodeDmx(p, m, dmx).gateFocus, 0.0f) << m.name;
+    dmx[static_cast<size_t>(coarse)] = 255;
+    if (fine >= 0) dmx[static_cast<size_t>(fine)] = 255;
+    EXPECT_FLOAT_EQ(decodeDmx(p, m, dmx).gateFocus, 1.0f) << m.name;
+    dmx[static_cast<size_t>(coarse)] = 64;
+    if (fine >= 0) dmx[static_cast<size_t>(fine)] = 0;
+    const float quarter = fine >= 0 ? 64.0f * 256.0f / 65535.0f : 64.0f / 255.0f;
+    const Attributes a = decodeDmx(p, m, dmx);
+    EXPECT_NEAR(a.gateFocus, quarter, 1e-6f) << m.name;
+    // In the beam: the gate blurred by |focus - 0.5| * 0.3 gate radii.
+    EXPECT_NEAR(p.optics(a).focusBlur, (0.5f - quarter) * 0.3f, 1e-6f) << m.name;
+  }
+  EXPECT_EQ(p.modes.size(), 2u);
+}
+
 }  // namespace
 }  // namespace haze

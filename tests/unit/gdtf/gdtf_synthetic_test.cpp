@@ -42,8 +42,8 @@ std::string movingHead(const std::string& beamAttrs = R"(BeamAngle="20" FieldAng
           </LogicalChannel>
         </DMXChannel>
         <DMXChannel DMXBreak="1" Offset="7" Geometry="Beam">
-          <LogicalChannel Attribute="Focus1">
-            <ChannelFunction Attribute="Focus1" DMXFrom="0/1"/>
+          <LogicalChannel Attribute="Focus1Adjust">
+            <ChannelFunction Attribute="Focus1Adjust" DMXFrom="0/1"/>
           </LogicalChannel>
         </DMXChannel>
         <DMXChannel DMXBreak="1" Offset="8" Geometry="Beam">
@@ -155,10 +155,10 @@ TEST(GdtfSynthetic, MapsDmxOffsetsBytesAndWheelSlots) {
   EXPECT_EQ(gobo.slotRanges[1].from, 10);
   EXPECT_EQ(gobo.slotRanges[1].to, 127);  // the wheel spin function starts at 128
   EXPECT_EQ(gobo.slotRanges[1].slot, 1);
-  EXPECT_EQ(m.channels[6].attribute, DmxAttribute::None);  // Focus1
+  EXPECT_EQ(m.channels[6].attribute, DmxAttribute::None);  // Focus1Adjust
   EXPECT_EQ(m.channels[7].attribute, DmxAttribute::Zoom);
   bool focusWarned = false;
-  for (const auto& w : g->warnings) focusWarned |= w.find("'Focus1' is not used by haze") != std::string::npos &&
+  for (const auto& w : g->warnings) focusWarned |= w.find("'Focus1Adjust' is not used by haze") != std::string::npos &&
                                                     w.find("description.xml line") != std::string::npos;
   EXPECT_TRUE(focusWarned);
   // The gobo image: Annex E, white opaque passes, black blocks, alpha 0 (holder) blocks.

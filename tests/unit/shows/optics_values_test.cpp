@@ -142,6 +142,33 @@ TEST(OpticsValues, AnimationWheelReadsWritesSwitchesAndFades) {
   EXPECT_EQ(*cueValuesOf(to).animation, "Flames");
 }
 
+// The lens's focus (docs/physics.md, "Focus"): read and written back byte-stable as "focus",
+// refused outside 0..1 at its place, fading linearly, recorded only away from its default, and
+// laid over by palettes of the beam kind.
+TEST(OpticsValues, FocusReadsWritesFadesAndIsRefusedOutsideItsRange) {
+  ShowParse p = parseShowText(withValues(R"({"focus": 0.25})"), test::validShowPath());
+  ASSERT_TRUE(p.problems.empty()) << p.problems[0].str();
+  const CueValues& v = p.show.cueLists[0].cues[0].values.at(101);
+  EXPECT_FLOAT_EQ(*v.gateFocus, 0.25f);
+  const std::string text = showToText(p.show);
+  EXPECT_NE(text.find("\"focus\": 0.25"), std::string::npos);
+  ShowParse q = parseShowText(text, test::validShowPath());
+  ASSERT_TRUE(q.problems.empty()) << q.problems[0].str();
+  EXPECT_EQ(q.show.cueLists[0].cues[0].values.at(101), v);
+  EXPECT_EQ(showToText(q.show), text);
+  for (const char* value : {R"({"focus": 1.5})", R"({"focus": -0.1})", R"({"focus": "sharp"})"}) {
+    ShowParse bad = parseShowText(withValues(value), test::validShowPath());
+    ASSERT_FALSE(bad.problems.empty()) << value;
+    EXPECT_EQ(bad.problems[0].place, "/cue_lists/0/cues/0/values/101/focus") << value;
+  }
+  Attributes from, to;
+  from.gateFocus = 0.2f;
+  to.gateFocus = 1.0f;
+  EXPECT_FLOAT_EQ(blendAttributes(from, to, 0.25, std::nullopt).gateFocus, 0.4f);
+  EXPECT_FALSE(cueValuesOf(Attributes{}).gateFocus.has_value());
+  EXPECT_FLOAT_EQ(*cueValuesOf(to).gateFocus, 1.0f);
+}
+
 TEST(OpticsValues, RefusedAtTheirPlace) {
   const std::pair<const char*, const char*> bad[] = {
       {R"({"frost": 1.5})", "/frost"},
