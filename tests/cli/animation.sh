@@ -54,16 +54,14 @@ cat >"$tmp/anim.haze.json" <<JSON
 JSON
 "$haze" validate "$tmp/anim.haze.json" >"$tmp/validate.txt" 2>&1; rc=$?
 check "the animation show validates (exit $rc: $(head -3 "$tmp/validate.txt"))" '[ $rc -eq 0 ]'
-ajv="$root/tests/node/node_modules/.bin/ajv"
-if [ -x "$ajv" ]; then
-  (cd "$root/tests/node" && "$ajv" validate --spec=draft2020 -c ajv-formats --strict=true -s "$root/schemas/show.schema.json" \
-     -d "$tmp/anim.haze.json" >"$tmp/ajv.txt" 2>&1); rc=$?
+source "$root/tests/cli/schema_check.bash"
+if [ -x "$schema_ajv" ]; then
+  conforms show.schema.json "$tmp/anim.haze.json" "$tmp/ajv.txt"; rc=$?
   check "the show conforms to the show schema (exit $rc: $(tail -2 "$tmp/ajv.txt"))" '[ $rc -eq 0 ]'
-  (cd "$root/tests/node" && "$ajv" validate --spec=draft2020 -c ajv-formats --strict=true -s "$root/schemas/fixture.schema.json" \
-     -d "$tmp/p/anim.json" >"$tmp/ajv2.txt" 2>&1); rc=$?
+  conforms fixture.schema.json "$tmp/p/anim.json" "$tmp/ajv2.txt"; rc=$?
   check "the profile conforms to the fixture schema (exit $rc: $(tail -2 "$tmp/ajv2.txt"))" '[ $rc -eq 0 ]'
 else
-  echo "FAIL: $ajv missing (make node-tools)"; fail=$((fail + 1))
+  echo "FAIL: $schema_ajv missing (make node-tools)"; fail=$((fail + 1))
 fi
 
 "$haze" fixture info "$tmp/p/anim.json" --json >"$tmp/anim-info.json" 2>/dev/null

@@ -70,16 +70,14 @@ cat >"$tmp/focus.haze.json" <<JSON
 JSON
 "$haze" validate "$tmp/focus.haze.json" >"$tmp/validate.txt" 2>&1; rc=$?
 check "the focus show validates (exit $rc: $(head -3 "$tmp/validate.txt"))" '[ $rc -eq 0 ]'
-ajv="$root/tests/node/node_modules/.bin/ajv"
-if [ -x "$ajv" ]; then
-  (cd "$root/tests/node" && "$ajv" validate --spec=draft2020 -c ajv-formats --strict=true -s "$root/schemas/show.schema.json" \
-     -d "$tmp/focus.haze.json" >"$tmp/ajv.txt" 2>&1); rc=$?
+source "$root/tests/cli/schema_check.bash"
+if [ -x "$schema_ajv" ]; then
+  conforms show.schema.json "$tmp/focus.haze.json" "$tmp/ajv.txt"; rc=$?
   check "the show conforms to the show schema (exit $rc: $(tail -2 "$tmp/ajv.txt"))" '[ $rc -eq 0 ]'
-  (cd "$root/tests/node" && "$ajv" validate --spec=draft2020 -c ajv-formats --strict=true -s "$root/schemas/fixture.schema.json" \
-     -d "$tmp/p/lens.json" >"$tmp/ajv2.txt" 2>&1); rc=$?
+  conforms fixture.schema.json "$tmp/p/lens.json" "$tmp/ajv2.txt"; rc=$?
   check "the profile conforms to the fixture schema (exit $rc: $(tail -2 "$tmp/ajv2.txt"))" '[ $rc -eq 0 ]'
 else
-  echo "FAIL: $ajv missing (make node-tools)"; fail=$((fail + 1))
+  echo "FAIL: $schema_ajv missing (make node-tools)"; fail=$((fail + 1))
 fi
 
 # Cue 2 fades fixture 1's focus from 0.2 to 0.8 over 4 s: 0.2 + 0.15 t. The wash has no focus

@@ -51,11 +51,12 @@ JSON
 check "the wheels show validates (exit $rc: $(head -3 "$tmp/validate.txt"))" '[ $rc -eq 0 ]'
 
 # The new keys are in schemas/show.schema.json.
-ajv="$root/tests/node/node_modules/.bin/ajv"
-if [ -x "$ajv" ]; then
-  (cd "$root/tests/node" && "$ajv" validate --spec=draft2020 -c ajv-formats --strict=true -s "$root/schemas/show.schema.json" \
-     -d "$tmp/spin.haze.json" >"$tmp/ajv.txt" 2>&1); rc=$?
+source "$root/tests/cli/schema_check.bash"
+if [ -x "$schema_ajv" ]; then
+  conforms show.schema.json "$tmp/spin.haze.json" "$tmp/ajv.txt"; rc=$?
   check "the wheels show conforms to the schema (exit $rc: $(tail -2 "$tmp/ajv.txt"))" '[ $rc -eq 0 ]'
+else
+  echo "FAIL: $schema_ajv missing (make node-tools)"; fail=$((fail + 1))
 fi
 
 # Cue 1 held: the angles at t = 0, 0.5, ..., 4 s lie on rotation + spin * t.
