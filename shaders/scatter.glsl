@@ -60,7 +60,9 @@ BeamRay beamRay(Beam b, vec3 v, float len) {
   return s;
 }
 
-vec3 scatterAt(Beam b, BeamRay s, float z) {
+// vRange: the least and largest V the walk has seen so far (the hard shadows' second pass,
+// planes.frag.glsl).
+vec3 scatterAt(Beam b, BeamRay s, float z, inout vec2 vRange) {
   vec3 d = s.d0 + z * s.d1;
   float r2 = max(dot(d, d), 1e-12);
   float r = sqrt(r2);
@@ -69,6 +71,7 @@ vec3 scatterAt(Beam b, BeamRay s, float z) {
   vec2 uv = p.xy / p.z * b.xb.w * 0.5 + 0.5;
   float cd = texture(uLightMaps, vec3(uv, b.yb.w)).r;
   float vis = beamVisibilityClip(b, s.c0 + z * s.c1);
+  vRange = vec2(min(vRange.x, vis), max(vRange.y, vis));
   float cosA = (s.q0 + z * s.q1) / r;
   if (uDensityOn == 0)
     return uSigmaS * phaseFunction(cosA) * vis * cd * b.color.rgb * exp(-uSigmaT * (r + z * s.len)) / r2;
