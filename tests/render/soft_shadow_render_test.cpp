@@ -98,9 +98,12 @@ TEST_F(SoftShadow, ShaftPenumbraInHazeMatchesTheReference) {
     double core, wide, penumbra;
   };
   // Measured on llvmpipe (cores / wide / penumbra): high 0.0110 / 0.0237 / 0.0197, default
-  // 0.0248 / 0.0324 / 0.0391; the limits are those times 1.5. Hard shadows measured against the
-  // same reference: high 0.0227 / 0.0326 / 0.0451, default 0.0521 / 0.0519 / 0.0893, each failing
-  // at least the cores' and the penumbra's limits (checked below).
+  // 0.0248 / 0.0324 / 0.0391 (0.0208 and 0.0408 since the shadow taps became loops); the limits
+  // are those times 1.5. Hard shadows measured against the same reference: high 0.0208 / 0.0319
+  // / 0.0425, default 0.0342 / 0.0388 / 0.0600, each failing the penumbra's limit, and at high
+  // the cores' too (checked below). At default the hard image's cores were 0.0521 until hard
+  // shadows walked twice the chords that cross an edge (planes.frag.glsl): what is left between
+  // hard and soft there is the penumbra, which the penumbra's limit sees.
   for (const Case& c : {Case{Quality::High, "high", 0.0165, 0.0356, 0.0296},
                         Case{Quality::Default, "default", 0.0372, 0.0486, 0.0587}}) {
     auto r = Renderer::create(venue, renderSettingsFor(c.quality, kW, kH));
@@ -133,7 +136,9 @@ TEST_F(SoftShadow, ShaftPenumbraInHazeMatchesTheReference) {
     EXPECT_LT(s->wideError, c.wide) << c.label;
     EXPECT_LT(softPen, c.penumbra) << c.label << ": the penumbra";
     // Teeth: hard shadows against the soft reference fail the same limits.
-    EXPECT_GT(h->coreError, c.core) << c.label << ": hard shadows pass the cores' limit";
+    if (c.quality == Quality::High) {
+      EXPECT_GT(h->coreError, c.core) << c.label << ": hard shadows pass the cores' limit";
+    }
     EXPECT_GT(hardPen, c.penumbra) << c.label << ": hard shadows pass the penumbra's limit";
     // And so does the soft image made 10 % brighter.
     ImageRGB brighter = soft;
