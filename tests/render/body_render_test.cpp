@@ -50,11 +50,7 @@ FrameState bodyFrame() {
 class BodyVsReference : public GlTest {
  protected:
   ImageRGB gpu(const Venue& venue, const FrameState& f, Quality q) {
-    auto r = Renderer::create(venue, renderSettingsFor(q, kW, kH));
-    EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().str());
-    if (!r.ok()) return {};
-    (*r)->render(f);
-    return (*r)->readRadiance();
+    return renderRadiance(venue, f, renderSettingsFor(q, kW, kH));
   }
 };
 

@@ -70,11 +70,7 @@ glm::vec2 lensPixel(const FrameState& f) {
 class LensVsReference : public GlTest {
  protected:
   ImageRGB gpu(const Venue& venue, const FrameState& f, Quality q) {
-    auto r = Renderer::create(venue, renderSettingsFor(q, kW, kH));
-    EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().str());
-    if (!r.ok()) return {};
-    (*r)->render(f);
-    return (*r)->readRadiance();
+    return renderRadiance(venue, f, renderSettingsFor(q, kW, kH));
   }
 };
 

@@ -11,6 +11,14 @@
 
 namespace haze::test {
 
+ImageRGB renderRadiance(const Venue& venue, const FrameState& frame, const RenderSettings& settings) {
+  auto r = Renderer::create(venue, settings);
+  EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().str());
+  if (!r.ok()) return {};
+  (*r)->render(frame);
+  return (*r)->readRadiance();
+}
+
 Venue floorVenue(float sizeM, float albedo) {
   Venue v = emptyVenue();
   addFloor(v, 0.0f, sizeM * 0.5f, haze::addMaterial(v, "floor", glm::vec3(albedo)));

@@ -12,6 +12,7 @@
 
 #include "fixtures/beam_optics.h"
 #include "renderer/context.h"
+#include "renderer/renderer.h"
 #include "renderer/gl/debug.h"
 #include "renderer/scene/frame_state.h"
 #include "renderer/scene/image.h"
@@ -34,6 +35,10 @@ class GlTest : public ::testing::Test {
   }
   std::unique_ptr<GlContext> context_;
 };
+
+// One frame rendered by a new renderer with these settings, its radiance read back (empty, and
+// the test failed, when the renderer cannot be made).
+ImageRGB renderRadiance(const Venue& venue, const FrameState& frame, const RenderSettings& settings);
 
 // An axis-aligned rectangle at height y, facing +Y, sizeM square, with one material of albedo.
 Venue floorVenue(float sizeM, float albedo);
