@@ -36,7 +36,7 @@ class GpuBodies {
   const std::vector<Draw>& draws() const { return draws_; }
   // Every posed mesh with `program` (venue.vert.glsl): its model matrix per draw, and with
   // baseColorLocation >= 0 its albedo there; the model matrix is the identity again afterwards.
-  // With a camera (the depth pre-pass and the lit pass), parts wholly outside its frustum are
+  // With a camera (the surfaces' G-buffer pass), parts wholly outside its frustum are
   // skipped and a closed mesh seen from outside its bound has its back faces culled: the
   // nearest surface on every ray is the same, so the picture is.
   struct Camera {

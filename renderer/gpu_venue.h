@@ -1,6 +1,6 @@
 // The venue on the GPU: one vertex buffer and one index buffer for every primitive (world
 // space, so shadow and surface passes share them), the indices grouped by material: one draw
-// per material for the lit pass, one draw of everything for the depth-only passes (a venue of
+// per material for the G-buffer pass, one draw of everything for the depth-only passes (a venue of
 // thousands of meshes costs a handful of draw calls, not thousands per shadow map). The
 // depth-only passes' copy of the indices is sorted into spatial chunks with bounds, so that a
 // beam's shadow map draws only the chunks its frustum reaches.

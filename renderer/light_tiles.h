@@ -1,4 +1,4 @@
-// Tiled light culling for the surface pass: a compute pass over the depth pre-pass that gives
+// Tiled light culling for the surface pass: a compute pass over the camera's depth that gives
 // each 4x4-pixel tile a bit mask of the beams that can reach a surface seen in it
 // (shaders/light_tiles.comp.glsl). With tens of beams most tiles see one to three of them.
 #pragma once

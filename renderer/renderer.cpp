@@ -10,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "renderer/beam_pass.h"
+#include "renderer/camera_uniforms.h"
 #include "renderer/beam_resources.h"
 #include "renderer/density_resources.h"
 #include "renderer/gl/program.h"
@@ -57,8 +58,11 @@ struct Renderer::Impl {
   GpuBodies bodies;
   BeamResources beams;
   DensityResources density;
-  gl::Program shadowProgram, surfaceProgram, lensProgram, postProgram, bloomPostProgram;
+  gl::Program shadowProgram, gbufferProgram, surfaceProgram, lensProgram, postProgram, bloomPostProgram;
   gl::Texture radiance, depth, display;
+  // The surfaces' attributes per pixel (gbuffer.frag.glsl), lit once per pixel by surface.frag.glsl.
+  gl::Texture gbuffer;
+  gl::Framebuffer gbufferFbo{"gbuffer_fbo"};
   gl::Sampler mipSampler{"radiance_mips"};  // for bloom: trilinear over the radiance's mip levels
   gl::Framebuffer sceneFbo{"scene_fbo"}, displayFbo{"display_fbo"};
   // The radiance target without its depth, for passes that read the scene depth as a texture.
@@ -95,12 +99,19 @@ Status Renderer::Impl::allocateTargets(int w, int h) {
   glNamedFramebufferTexture(radianceOnlyFbo.id(), GL_COLOR_ATTACHMENT0, radiance.id(), 0);
   glNamedFramebufferTexture(sceneFbo.id(), GL_COLOR_ATTACHMENT0, radiance.id(), 0);
   glNamedFramebufferTexture(sceneFbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+  gbuffer = gl::Texture(GL_TEXTURE_2D, "gbuffer");
+  glTextureStorage2D(gbuffer.id(), 1, GL_RGBA32UI, w, h);
+  glTextureParameteri(gbuffer.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // an integer texture is complete only so
+  glTextureParameteri(gbuffer.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glNamedFramebufferTexture(gbufferFbo.id(), GL_COLOR_ATTACHMENT0, gbuffer.id(), 0);
+  glNamedFramebufferTexture(gbufferFbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
   display = gl::Texture(GL_TEXTURE_2D, "display");
   glTextureStorage2D(display.id(), 1, GL_RGBA8, w, h);
   glNamedFramebufferTexture(displayFbo.id(), GL_COLOR_ATTACHMENT0, display.id(), 0);
   if (glCheckNamedFramebufferStatus(sceneFbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
-      glCheckNamedFramebufferStatus(displayFbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    return Error{"", "", "the GL driver cannot render to RGBA32F and DEPTH32F targets"};
+      glCheckNamedFramebufferStatus(displayFbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
+      glCheckNamedFramebufferStatus(gbufferFbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    return Error{"", "", "the GL driver cannot render to RGBA32F, RGBA16F and DEPTH32F targets"};
   beamPass.resize(w, h);
   tiles.resize(w, h);
   return Ok{};
@@ -115,7 +126,11 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   auto impl = std::make_unique<Impl>(venue, settings);
   auto shadow = gl::buildProgram({.label = "shadow_depth", .vertex = "venue.vert.glsl"});
   if (!shadow) return shadow.error();
-  auto surface = gl::buildProgram({.label = "surface", .vertex = "venue.vert.glsl", .fragment = "surface.frag.glsl"});
+  auto gbuffer = gl::buildProgram({.label = "gbuffer", .vertex = "venue.vert.glsl", .fragment = "gbuffer.frag.glsl"});
+  if (!gbuffer) return gbuffer.error();
+  impl->gbufferProgram = std::move(*gbuffer);
+  auto surface =
+      gl::buildProgram({.label = "surface", .vertex = "fullscreen.vert.glsl", .fragment = "surface.frag.glsl"});
   if (!surface) return surface.error();
   auto lens = gl::buildProgram({.label = "lens", .vertex = "lens.vert.glsl", .fragment = "lens.frag.glsl"});
   if (!lens) return lens.error();
@@ -205,29 +220,50 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   const glm::vec4 background(med.background * std::exp(-sigmaT * backgroundPath), 1.0f);
   glClearNamedFramebufferfv(m.sceneFbo.id(), GL_COLOR, 0, glm::value_ptr(background));
   const float one = 1.0f;
+  glDepthMask(GL_TRUE);  // a depth clear honours the mask, which other passes leave off
   glClearNamedFramebufferfv(m.sceneFbo.id(), GL_DEPTH, 0, &one);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
 
-  // Depth first, so the lighting below runs once per pixel, not once per overlapping surface.
+  // The surfaces' attributes first (depth-tested), then the lighting once per pixel over them.
   const glm::mat4 viewProj = cameraViewProjection(frame.camera, static_cast<float>(w) / static_cast<float>(h));
-  glUseProgram(m.shadowProgram.id());
-  glProgramUniformMatrix4fv(m.shadowProgram.id(), HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
-  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  m.venue.drawInside(viewProj);
-  if (!m.bodies.empty()) {
-    m.bodies.bind();
-    m.bodies.drawAll();
+  glBindFramebuffer(GL_FRAMEBUFFER, m.gbufferFbo.id());
+  const GLuint gprog = m.gbufferProgram.id();
+  glUseProgram(gprog);
+  glProgramUniformMatrix4fv(gprog, HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
+  m.venue.bind();
+  for (const GpuVenue::Draw& d : m.venue.draws()) {
+    const GpuVenue::GpuMaterial& mat = m.venue.materials()[static_cast<size_t>(d.material)];
+    glProgramUniform4fv(gprog, HAZE_LOC_SURFACE_BASE_COLOR, 1, glm::value_ptr(mat.baseColor));
+    glProgramUniform3fv(gprog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(mat.emissive));
+    glProgramUniform1i(gprog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, mat.baseColorTexture >= 0);
+    glProgramUniform1i(gprog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, mat.emissiveTexture >= 0);
+    if (mat.baseColorTexture >= 0)
+      glBindTextureUnit(HAZE_UNIT_BASE_TEXTURE, m.venue.texture(mat.baseColorTexture).id());
+    if (mat.emissiveTexture >= 0)
+      glBindTextureUnit(HAZE_UNIT_EMISSIVE_TEXTURE, m.venue.texture(mat.emissiveTexture).id());
+    m.venue.draw(d);
   }
   const GpuBodies::Camera bodyCamera{viewProj, frame.camera.position};
   const GpuBodies::Camera* cull = settings_.cullBodies ? &bodyCamera : nullptr;
-  m.bodies.drawMeshes(m.shadowProgram.id(), -1, cull);
+  if (!m.bodies.empty() || m.bodies.hasMeshes()) {
+    const glm::vec3 black(0.0f);
+    glProgramUniform1i(gprog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, 0);
+    glProgramUniform1i(gprog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, 0);
+    glProgramUniform3fv(gprog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(black));
+  }
+  if (!m.bodies.empty()) {
+    m.bodies.bind();
+    for (const GpuBodies::Draw& d : m.bodies.draws()) {
+      const glm::vec4 albedo(d.albedo, 1.0f);
+      glProgramUniform4fv(gprog, HAZE_LOC_SURFACE_BASE_COLOR, 1, glm::value_ptr(albedo));
+      m.bodies.draw(d);
+    }
+  }
+  if (m.bodies.hasMeshes()) m.bodies.drawMeshes(gprog, HAZE_LOC_SURFACE_BASE_COLOR, cull);
   times_.bodyMeshesDrawn = cull ? m.bodies.meshesDrawn() : static_cast<int>(frame.bodyMeshes.size());
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDepthFunc(GL_EQUAL);
-  glDepthMask(GL_FALSE);
 
   m.beams.bind();
   const bool tiled = settings_.tiledSurfaces && m.beams.count() > 0;
@@ -236,10 +272,11 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     m.tiles.update(frame.camera, m.beams.count());
     m.tiles.bind();
   }
+  glBindFramebuffer(GL_FRAMEBUFFER, m.radianceOnlyFbo.id());
+  glDisable(GL_DEPTH_TEST);
   const GLuint prog = m.surfaceProgram.id();
   glUseProgram(prog);
-  glProgramUniformMatrix4fv(prog, HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
-  glProgramUniform3fv(prog, HAZE_LOC_SURFACE_EYE, 1, glm::value_ptr(frame.camera.position));
+  setCameraUniforms(prog, frame.camera, static_cast<float>(w) / static_cast<float>(h));
   glProgramUniform1f(prog, HAZE_LOC_SURFACE_SIGMA_T, sigmaT);
   glProgramUniform3fv(prog, HAZE_LOC_SURFACE_AMBIENT, 1, glm::value_ptr(med.ambient));
   glProgramUniform1i(prog, HAZE_LOC_SURFACE_BEAM_COUNT, m.beams.count());
@@ -248,40 +285,12 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   m.beams.bindSoftShadows(prog);
   m.density.bind(prog);
   m.sun.bind(prog);
-  m.venue.bind();
-  for (const GpuVenue::Draw& d : m.venue.draws()) {
-    const GpuVenue::GpuMaterial& mat = m.venue.materials()[static_cast<size_t>(d.material)];
-    glProgramUniform4fv(prog, HAZE_LOC_SURFACE_BASE_COLOR, 1, glm::value_ptr(mat.baseColor));
-    glProgramUniform3fv(prog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(mat.emissive));
-    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, mat.baseColorTexture >= 0);
-    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, mat.emissiveTexture >= 0);
-    if (mat.baseColorTexture >= 0)
-      glBindTextureUnit(HAZE_UNIT_BASE_TEXTURE, m.venue.texture(mat.baseColorTexture).id());
-    if (mat.emissiveTexture >= 0)
-      glBindTextureUnit(HAZE_UNIT_EMISSIVE_TEXTURE, m.venue.texture(mat.emissiveTexture).id());
-    m.venue.draw(d);
-  }
-  if (!m.bodies.empty()) {
-    const glm::vec3 none(0.0f);
-    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, 0);
-    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, 0);
-    glProgramUniform3fv(prog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(none));
-    m.bodies.bind();
-    for (const GpuBodies::Draw& d : m.bodies.draws()) {
-      const glm::vec4 albedo(d.albedo, 1.0f);
-      glProgramUniform4fv(prog, HAZE_LOC_SURFACE_BASE_COLOR, 1, glm::value_ptr(albedo));
-      m.bodies.draw(d);
-    }
-  }
-  if (m.bodies.hasMeshes()) {
-    const glm::vec3 none(0.0f);
-    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, 0);
-    glProgramUniform1i(prog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, 0);
-    glProgramUniform3fv(prog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(none));
-    m.bodies.drawMeshes(prog, HAZE_LOC_SURFACE_BASE_COLOR, cull);
-  }
-  glDepthMask(GL_TRUE);
-  glDepthFunc(GL_LESS);
+  glBindTextureUnit(HAZE_UNIT_GBUFFER, m.gbuffer.id());
+  glBindTextureUnit(HAZE_UNIT_SCENE_DEPTH, m.depth.id());
+  glBindVertexArray(m.emptyVao.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindFramebuffer(GL_FRAMEBUFFER, m.sceneFbo.id());
+  glEnable(GL_DEPTH_TEST);
 
   // The lens discs, after the venue so that they hide what lies behind them and their depth
   // ends the beam pass's eye rays there (docs/rendering.md, "Lenses"). A few pixels each.

@@ -43,7 +43,7 @@ struct RenderSettings {
   // (GpuVenue::drawInside); off, every chunk (same depths, for tests and the bench).
   bool cullVenueChunks = true;
   // Body meshes wholly outside the camera's frustum skipped and closed ones back-face culled in
-  // the depth and lit passes (renderer/gpu_bodies.h); off, every part is drawn whole (the same
+  // the G-buffer pass (renderer/gpu_bodies.h); off, every part is drawn whole (the same
   // image, for tests and haze bench --compare-bodies).
   bool cullBodies = true;
   // All beams' shadow maps together, in texels (4 bytes each): with more beams than fit at

@@ -15,7 +15,7 @@
 #define HAZE_ATTR_NORMAL 1
 #define HAZE_ATTR_UV 2
 
-// Every pass draws into one colour attachment.
+// Every pass but the surfaces' G-buffer draws into one colour attachment.
 #define HAZE_FRAG_OUT 0
 
 // ---- Texture units ------------------------------------------------------------------------
@@ -39,6 +39,10 @@
 #define HAZE_UNIT_SUN_PATH 16       // sun.glsl: the integral of D towards the sun, over the density grid
 #define HAZE_UNIT_PARTICLES 17      // particles.vert.glsl: RGBA32F texture buffer, two texels per particle
 #define HAZE_UNIT_SHADOW_MIN 20     // beams.glsl: the shadow maps' least depths (renderer/scene/depth_pyramid.h), R32F array, its levels side by side in level 0
+// surface.frag.glsl: the surfaces' attributes per pixel from gbuffer.frag.glsl (RGBA32UI): the
+// normal (octahedral, two snorm16), albedo and emission (half floats); the position is the scene
+// depth's, so the G-buffer adds 16 bytes a pixel
+#define HAZE_UNIT_GBUFFER 18
 // No image units are used.
 
 // ---- Shader storage buffer bindings -------------------------------------------------------
@@ -54,8 +58,8 @@
 #define HAZE_LOC_VIEW_PROJ 0
 #define HAZE_LOC_MODEL 12   // mat4 (12..15): a body mesh's placement; identity (its default) for the venue
 
-// surface.frag.glsl (with venue.vert.glsl)
-#define HAZE_LOC_SURFACE_EYE 1
+// surface.frag.glsl (a full-screen pass, with camera.glsl; the material's four are gbuffer.frag.glsl's,
+// with venue.vert.glsl)
 #define HAZE_LOC_SURFACE_SIGMA_T 2
 #define HAZE_LOC_SURFACE_AMBIENT 3
 #define HAZE_LOC_SURFACE_BASE_COLOR 4

@@ -1,6 +1,6 @@
 // Tiled light culling (as in Forward+ renderers): for each 4x4-pixel (HAZE_TILE_PX) tile of the screen, a bit
 // mask of the beams whose light cone can reach a surface seen in that tile, from the tile's depth
-// bounds in the depth pre-pass. The surface pass then loops over those beams only: a fragment
+// bounds in the camera's depth. The surface pass then loops over those beams only: a fragment
 // shader on a CPU rasteriser (llvmpipe) pays for every iteration of its light loop, however
 // little an iteration does, so testing every beam at every pixel cost more than the lighting.
 #include "beams.glsl"

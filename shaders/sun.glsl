@@ -84,5 +84,7 @@ vec3 sunIrradiance(vec3 x, vec3 n, float sigmaT) {
   float texelM = mapWidthM / float(textureSize(uSunShadow, 0).x);
   float slant = sqrt(max(1.0 - cosine * cosine, 0.0));
   float v = sunVisibility(x + n * max(0.002, 1.5 * texelM * slant / max(cosine, 0.2)));
-  return uSunIlluminance * (cosine * v * exp(-sigmaT * sunPathTo(x)));
+  // A surface lies in the venue's box (the box is its bounds), but the point the depth buffer
+  // gives a floor on the box's face may be a micrometre outside it, where the path would be 0.
+  return uSunIlluminance * (cosine * v * exp(-sigmaT * sunPathTo(clamp(x, uSunBoxMin, uSunBoxMax))));
 }

@@ -8,7 +8,7 @@ layout(location = HAZE_ATTR_NORMAL) in vec3 aNormal;
 layout(location = HAZE_ATTR_UV) in vec2 aUv;
 layout(location = HAZE_LOC_VIEW_PROJ) uniform mat4 uViewProj;
 layout(location = HAZE_LOC_MODEL) uniform mat4 uModel = mat4(1.0);
-// The depth pre-pass and the lit pass must produce bit-identical depths (GL_EQUAL test).
+// Shadow maps, the G-buffer and the beam pass's depth reads must agree on the venue's depths to the bit.
 invariant gl_Position;
 
 out vec3 vPosition;
