@@ -98,6 +98,11 @@ struct Gui {
   float bloom = 0.0f;  // lens glare on the display (DisplaySettings::bloom); never in the show
   double frameMs = 0.0;
   int stillFrames = 0;
+  // Draft frames are drawn at a share of the viewport's size that keeps them near this many
+  // milliseconds (renderer/scene/draft_scale.h; 0: always the full size). View > Draft budget.
+  double draftBudgetMs = 50.0;
+  float draftScale = 1.0f;     // the last draft frame's linear scale
+  bool draftLimited = false;   // the budget was not met even at the smallest scale
   bool showHelp = false;
   // The last MVR import's warnings, folded (shows/import/mvr_import.h groupMvrWarnings), in a window.
   std::vector<std::string> importWarnings;

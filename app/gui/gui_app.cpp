@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "app/commands.h"
 #include "app/frame_builder.h"
@@ -28,6 +29,7 @@
 #include "app/gui/window_context.h"
 #include "renderer/gl/gl.h"
 #include "renderer/renderer.h"
+#include "renderer/scene/draft_scale.h"
 #include "renderer/scene/image.h"
 
 namespace haze {
@@ -47,14 +49,19 @@ struct Options {
   std::string bind = "127.0.0.1";
   std::optional<ExposureMode> exposureMode;
   std::optional<float> exposureEv;
+  double turntableDeg = 0.0;  // the view turns this much about its target every frame
+  double draftBudgetMs = -1.0;  // < 0: the GUI's own
 };
 
 constexpr const char* kUsage =
     "haze open SHOW [--width W --height H] [--cue N] [--select ID]... [--tab cues|fixtures|library|patch|air|playback]\n"
     "               [--quality draft|default|high] [--help-window] [--sacn] [--artnet] [--bind ADDR]\n"
-    "               [--exposure EV] [--exposure-mode auto|manual] [--screenshot OUT.png [--frames N]]\n"
+    "               [--exposure EV] [--exposure-mode auto|manual] [--draft-budget MS]\n"
+    "               [--turntable DEG] [--screenshot OUT.png] [--frames N]\n"
     "The designer's GUI on a show (the bundled demo when none is given); docs/gui.md.\n"
-    "--screenshot draws N frames (default 3) of the whole window, writes the last and exits.\n";
+    "--draft-budget: while anything moves, frames are drawn smaller to take about MS (default 50,\n"
+    "0: always the full size). --turntable: the view turns DEG degrees a frame (a demo, a test).\n"
+    "--frames N draws N frames and exits; with --screenshot, of the whole window, written at the end.\n";
 
 int fail(const std::string& line) {
   std::fprintf(stderr, "haze: %s\n", line.c_str());
@@ -99,6 +106,8 @@ std::optional<int> parseOptions(const Args& args, Options& opt) {
               })
       .choice("--quality", quality, {"draft", "default", "high"})
       .number("--exposure", exposure, -100, 100, "a number of EV")
+      .number("--turntable", opt.turntableDeg, -180, 180, "degrees per frame")
+      .number("--draft-budget", opt.draftBudgetMs, 0, 10000, "milliseconds (0 or more)")
       .choice("--exposure-mode", exposureMode, {"auto", "manual"})
       .positional(opt.show, "show", false);
   if (auto done = cli.parse(args)) return done;
@@ -124,6 +133,7 @@ Status applyOptions(Gui& gui, const Options& opt) {
     applyClickToSelection(gui.doc->selection, id, false, true);
   }
   if (opt.quality) gui.quality = *opt.quality;
+  if (opt.draftBudgetMs >= 0.0) gui.draftBudgetMs = opt.draftBudgetMs;
   // The show's first camera may carry an exposure; the command line wins, as in haze render.
   const ExposureChoice exposure = exposureChoiceFor(
       gui.doc->show(), {.exposureMode = opt.exposureMode, .exposureEv = opt.exposureEv});
@@ -227,23 +237,37 @@ void drawPanels(Gui& gui, int winW, int winH) {
 struct ViewportRenderers {
   std::unique_ptr<Renderer> draft, still;
   int width = 0, height = 0;
+  int draftWidth = 0, draftHeight = 0;  // the draft's share of the viewport (DraftScale)
+  DraftScale draftScale;
   Quality quality = Quality::Default;
   const ShowDocument* doc = nullptr;
 
   Status fit(Gui& gui, int vw, int vh) {
+    if (draftScale.budgetMs() != gui.draftBudgetMs) draftScale.setBudget(gui.draftBudgetMs);
+    const int dw = std::max(1, static_cast<int>(std::lround(vw * draftScale.scale())));
+    const int dh = std::max(1, static_cast<int>(std::lround(vh * draftScale.scale())));
     const bool sameRenderers = still && gui.quality == quality && doc == gui.doc.get();
-    if (sameRenderers && vw == width && vh == height) return Ok{};
+    if (sameRenderers && vw == width && vh == height) {
+      if (dw == draftWidth && dh == draftHeight) return Ok{};
+      // A new draft scale remakes the draft's targets; its maps and programs are kept.
+      if (Status d = draft->resize(dw, dh); !d) return d;
+      draftWidth = dw;
+      draftHeight = dh;
+      return Ok{};
+    }
     if (sameRenderers) {
       // A resized viewport remakes only the renderers' targets; their programs are kept.
-      if (Status d = draft->resize(vw, vh); !d) return d;
+      if (Status d = draft->resize(dw, dh); !d) return d;
       if (Status s = still->resize(vw, vh); !s) return s;
       width = vw;
       height = vh;
+      draftWidth = dw;
+      draftHeight = dh;
       gui.stillFrames = 0;
       return Ok{};
     }
     // A new document may have a new venue: the renderers are made for one venue.
-    auto d = Renderer::create(gui.doc->venue(), renderSettingsFor(Quality::Draft, vw, vh));
+    auto d = Renderer::create(gui.doc->venue(), renderSettingsFor(Quality::Draft, dw, dh));
     if (!d) return d.error();
     auto s = Renderer::create(gui.doc->venue(), renderSettingsFor(gui.quality, vw, vh));
     if (!s) return s.error();
@@ -251,6 +275,8 @@ struct ViewportRenderers {
     still = std::move(*s);
     width = vw;
     height = vh;
+    draftWidth = dw;
+    draftHeight = dh;
     quality = gui.quality;
     doc = gui.doc.get();
     gui.stillFrames = 0;
@@ -352,6 +378,42 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   return settled && std::abs(gui.shownEv - target) < 0.01f;
 }
 
+// The draft frames' times, from one swap to the next (what the designer sees), fed to the draft
+// scale; a frame that began by waiting for events is not timed.
+struct DraftPacing {
+  std::chrono::steady_clock::time_point lastSwap = std::chrono::steady_clock::now();
+  bool waited = true;
+  std::vector<double> draftMs;  // every timed draft frame, for --turntable's summary
+
+  void swapped(Gui& gui, ViewportRenderers& renderers) {
+    const auto now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - lastSwap).count();
+    lastSwap = now;
+    if (gui.stillFrames == 0 && !waited && renderers.width > 0) {
+      draftMs.push_back(ms);
+      gui.draftScale = static_cast<float>(renderers.draftWidth) / static_cast<float>(renderers.width);
+      renderers.draftScale.update(ms);
+      gui.draftLimited = renderers.draftScale.limited();
+    }
+    waited = false;
+  }
+
+  // One line for --turntable: the draft frames' median time and the size they settled at.
+  void summary(const Gui& gui, const ViewportRenderers& renderers) const {
+    std::vector<double> ms(draftMs.begin() + std::min<size_t>(draftMs.size(), 5), draftMs.end());  // past the start-up
+    if (ms.empty()) ms = draftMs;
+    if (ms.empty()) {
+      std::printf("turntable: no draft frame was timed\n");
+      return;
+    }
+    std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
+    const double median = ms[ms.size() / 2];
+    std::printf("turntable: %zu draft frames, median %.1f ms (%.1f per second), drawn at %dx%d of %dx%d, budget %g ms%s\n",
+                draftMs.size(), median, 1000.0 / median, renderers.draftWidth, renderers.draftHeight, renderers.width,
+                renderers.height, gui.draftBudgetMs, gui.draftLimited ? ", not met at the smallest size" : "");
+  }
+};
+
 }  // namespace
 
 int runGui(const Args& args) {
@@ -377,13 +439,19 @@ int runGui(const Args& args) {
 
   ViewportRenderers renderers;
   ChangeWatch watch;
+  DraftPacing pacing;
   const auto start = std::chrono::steady_clock::now();
   int frame = 0;
   int exitCode = 0;
   bool settled = false;
   while (true) {
-    if (settled) glfwWaitEventsTimeout(0.1);
-    else glfwPollEvents();
+    if (settled) {
+      glfwWaitEventsTimeout(0.1);
+      pacing.waited = true;
+    } else {
+      glfwPollEvents();
+    }
+    if (opt.turntableDeg != 0.0) gui.orbit.yawRad += static_cast<float>(opt.turntableDeg * 3.14159265358979 / 180.0);
     if (glfwWindowShouldClose(gui.window) && (gui.quitConfirmed || !gui.doc->modified() || opt.frames > 0)) break;
     int fbW = 0, fbH = 0, winW = 0, winH = 0;
     glfwGetFramebufferSize(gui.window, &fbW, &fbH);
@@ -424,9 +492,12 @@ int runGui(const Args& args) {
         if (!s) exitCode = fail(s.error().str());
       }
       glfwSwapBuffers(gui.window);
+      pacing.swapped(gui, renderers);
+      if (opt.turntableDeg != 0.0) pacing.summary(gui, renderers);
       break;
     }
     glfwSwapBuffers(gui.window);
+    pacing.swapped(gui, renderers);
     publishFrameCount(frame);
   }
 

@@ -156,6 +156,11 @@ void drawMenuBar(Gui& gui) {
     const char* names[] = {"Draft", "Default", "High"};
     for (int q = 0; q < 3; ++q)
       if (ImGui::MenuItem(names[q], nullptr, static_cast<int>(gui.quality) == q)) gui.quality = static_cast<Quality>(q);
+    // While anything moves, frames are drawn smaller to keep about this time (0: full size).
+    float budget = static_cast<float>(gui.draftBudgetMs);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+    if (ImGui::SliderFloat("Draft budget", &budget, 0.0f, 200.0f, budget <= 0.0f ? "full size" : "%.0f ms"))
+      gui.draftBudgetMs = std::max(0.0f, budget);
     ImGui::Separator();
     // docs/movement.md: off, heads jump to every value at once.
     ImGui::MenuItem("Real movement speeds", nullptr, &gui.realMovement);
@@ -173,6 +178,9 @@ void drawMenuBar(Gui& gui) {
   ImGui::Separator();
   char timing[64];
   if (gui.stillFrames > 0) std::snprintf(timing, sizeof(timing), "%4.0f ms  refining %d", gui.frameMs, gui.stillFrames);
+  else if (gui.draftScale < 1.0f)
+    std::snprintf(timing, sizeof(timing), "%4.0f ms  draft at %.0f %%%s", gui.frameMs, 100.0f * gui.draftScale,
+                  gui.draftLimited ? ", over budget" : "");
   else std::snprintf(timing, sizeof(timing), "%4.0f ms  draft", gui.frameMs);
   ImGui::TextUnformatted(timing);
   if (!gui.status.empty()) {
