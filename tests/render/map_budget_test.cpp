@@ -13,8 +13,6 @@
 #include <cstdio>
 #include <cstring>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "app/bench_scene.h"
 #include "app/render_session.h"
 #include "render_test_util.h"
@@ -41,19 +39,6 @@ RenderSettings settings(double budgetMs) {
   s.timePasses = true;
   s.mapWorkBudgetMs = budgetMs;
   return s;
-}
-
-// Every beam turned about the vertical through its lens by `deg` (a pan that keeps the lens in
-// place, so that the venue's shadows stay where they were in the world).
-FrameState turned(FrameState f, float deg) {
-  const glm::mat3 r(glm::rotate(glm::mat4(1.0f), glm::radians(deg), glm::vec3(0.0f, 1.0f, 0.0f)));
-  for (BeamState& b : f.beams) {
-    b.pose.xb = r * b.pose.xb;
-    b.pose.yb = r * b.pose.yb;
-    b.pose.zb = r * b.pose.zb;
-    b.poseKey += 1000;
-  }
-  return f;
 }
 
 bool bitEqual(const ImageRGB& a, const ImageRGB& b) {
@@ -92,7 +77,7 @@ Pair makePair(const Venue& venue) {
 
 TEST_F(MapBudget, MovedBeamsCatchUpOneShadowMapAFrame) {
   const Venue venue = benchVenue(kBeams);
-  const FrameState before = benchFrame(kBeams), after = turned(before, 6.0f);
+  const FrameState before = benchFrame(kBeams), after = turnedBeams(before, 6.0f);
   Pair r = makePair(venue);
   ASSERT_TRUE(r.budgeted && r.unbudgeted);
   // Beams without any map get theirs at once, budget or not: the first frames agree.
@@ -131,6 +116,35 @@ TEST_F(MapBudget, MovedBeamsCatchUpOneShadowMapAFrame) {
   std::printf("[ map_budget ] stale frame vs caught up: relative L1 difference %.4f\n", staleDiff);
   EXPECT_LT(staleDiff, kStaleLimit);
   if (staleDiff >= kStaleLimit) writeDiagnostics("map_budget_stale", stale, caughtUp);
+}
+
+// A beam patched while the others wait gets its maps in its first frame, outside the budget:
+// it has no old map to fall back on, and a layer it never drew holds nothing it could read.
+TEST_F(MapBudget, ANewBeamGetsItsMapAtOnce) {
+  const Venue venue = benchVenue(kBeams);
+  const FrameState all = benchFrame(kBeams);  // one distribution: one light map for all beams
+  FrameState before = all;
+  before.beams.pop_back();
+  const FrameState after = turnedBeams(all, 6.0f);
+  Pair r = makePair(venue);
+  ASSERT_TRUE(r.budgeted && r.unbudgeted);
+  r.budgeted->render(before);
+  r.unbudgeted->render(before);
+  EXPECT_EQ(r.budgeted->lastTimes().shadowMapsRendered, kBeams - 1);
+  for (int frame = 1; frame < kBeams; ++frame) {
+    r.budgeted->render(after);
+    r.unbudgeted->render(after);
+    const PassTimes& t = r.budgeted->lastTimes();
+    // The new beam's map and the longest waiting one's in the first frame, one a frame after.
+    EXPECT_EQ(t.shadowMapsRendered, frame == 1 ? 2 : 1) << "frame " << frame;
+    EXPECT_EQ(t.lightMapsBaked, 0) << "frame " << frame;
+    EXPECT_EQ(t.mapsPending, kBeams - 1 - frame) << "frame " << frame;
+    const ImageRGB img = r.budgeted->readRadiance();
+    EXPECT_TRUE(finite(img)) << "frame " << frame;
+    if (t.mapsPending == 0) {
+      EXPECT_TRUE(bitEqual(img, r.unbudgeted->readRadiance())) << "frame " << frame;
+    }
+  }
 }
 
 // A light map whose top half (+y of the gate) is opaque: turning it changes the map, not the cone.
