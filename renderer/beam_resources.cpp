@@ -360,10 +360,13 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
   std::sort(deferred.begin(), deferred.end(), [](const Deferred& a, const Deferred& b) {
     return std::tie(a.since, a.beam, a.kind) < std::tie(b.since, b.beam, b.kind);
   });
+  // The oldest always goes (every frame progresses); the others while they are expected to end
+  // within the budget (each kind's last time: one map more would overrun it by a whole map).
   bool first = true;
   for (const Deferred& d : deferred) {
-    const double spentMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (!first && spentMs >= settings_.mapWorkBudgetMs) break;  // the oldest always goes: every frame progresses
+    const auto now = std::chrono::steady_clock::now();
+    const double spentMs = std::chrono::duration<double, std::milli>(now - start).count();
+    if (!first && spentMs + lastMapMs_[d.kind] > settings_.mapWorkBudgetMs) break;
     const size_t l = static_cast<size_t>(d.beam);
     if (d.kind == 0) {
       if (layerOf[keys[l]] >= 0) continue;  // another beam with this content was baked already
@@ -371,6 +374,7 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
     } else {
       draw(d.beam);
     }
+    lastMapMs_[d.kind] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - now).count();
     first = false;
   }
 

@@ -124,6 +124,7 @@ class BeamResources {
   std::vector<uint64_t> drawnLightKeys_;
   std::vector<int> drawnLightFixtures_;
   uint64_t updates_ = 0;
+  double lastMapMs_[2] = {0.0, 0.0};  // the last deferred light-map bake's and shadow map's times
   std::vector<char> drawn_;            // per beam
   std::vector<float> coreCos2_;        // per light-map layer: the map's core (beam_resources.cpp)
   std::vector<float> depthScratch_;
