@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -249,9 +250,6 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
   // Under a budget a beam whose light map changed may keep its old one (its fallback) for a
   // while: the layers that hold those stay in use too.
   std::unordered_map<uint64_t, int> held;  // fallback content -> its layer
-  const auto baked = [&](uint64_t key) {
-    return std::find(lightKeys_.begin(), lightKeys_.end(), key) != lightKeys_.end();
-  };
   const auto fallbackLayer = [&](size_t i) {
     const int l = drawnLightLayers_[i];
     if (l < 0 || l >= lightCapacity_ || drawnLightFixtures_[i] != frame.beams[i].fixtureId ||
@@ -259,10 +257,12 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
       return -1;
     return l;
   };
-  if (budgeted)
+  if (budgeted) {
+    const std::unordered_set<uint64_t> baked(lightKeys_.begin(), lightKeys_.end());
     for (size_t i = 0; i < un; ++i)
-      if (const int l = fallbackLayer(i); l >= 0 && !baked(keys[i]) && !layerOf.contains(drawnLightKeys_[i]))
+      if (const int l = fallbackLayer(i); l >= 0 && !baked.contains(keys[i]) && !layerOf.contains(drawnLightKeys_[i]))
         held.emplace(drawnLightKeys_[i], l);
+  }
   ensureLightCapacity(static_cast<int>(layerOf.size() + held.size()), budgeted);
   std::vector<int> freeLayers;
   for (int l = lightCapacity_ - 1; l >= 0; --l) {
