@@ -116,6 +116,14 @@ TEST_F(MapBudget, MovedBeamsCatchUpOneShadowMapAFrame) {
   std::printf("[ map_budget ] stale frame vs caught up: relative L1 difference %.4f\n", staleDiff);
   EXPECT_LT(staleDiff, kStaleLimit);
   if (staleDiff >= kStaleLimit) writeDiagnostics("map_budget_stale", stale, caughtUp);
+
+  // The budget lifted (a caller about to make a final image): every map in the frame again.
+  r.budgeted->setMapWorkBudgetMs(0.0);
+  r.budgeted->render(before);
+  r.unbudgeted->render(before);
+  EXPECT_EQ(r.budgeted->lastTimes().shadowMapsRendered, kBeams);
+  EXPECT_EQ(r.budgeted->lastTimes().mapsPending, 0);
+  EXPECT_TRUE(bitEqual(r.budgeted->readRadiance(), r.unbudgeted->readRadiance()));
 }
 
 // A beam patched while the others wait gets its maps in its first frame, outside the budget:
