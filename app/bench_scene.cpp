@@ -5,6 +5,7 @@
 #include <memory>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "fixtures/photometry.h"
@@ -12,8 +13,9 @@
 #include "renderer/scene/scene_builder.h"
 
 namespace haze {
-
 namespace {
+
+uint64_t mixKey(uint64_t h, uint64_t v) { return h ^ (v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2)); }
 
 // How the stage grows with the rig: 16 fixtures or fewer on two 16 m truss lines in a 20 m room
 // (the scene every earlier measurement used), more on more lines (pairs, 5 m apart front to back)
@@ -107,6 +109,17 @@ FrameState benchFrame(int fixtures) {
     b.poseKey = static_cast<uint64_t>(i + 1);
     b.opticsKey = 1;  // one distribution for all: light maps are equal
     f.beams.push_back(std::move(b));
+  }
+  return f;
+}
+
+FrameState turnedBeams(FrameState f, float deg) {
+  const glm::mat3 r(glm::rotate(glm::mat4(1.0f), glm::radians(deg), glm::vec3(0.0f, 1.0f, 0.0f)));
+  for (BeamState& b : f.beams) {
+    b.pose.xb = r * b.pose.xb;
+    b.pose.yb = r * b.pose.yb;
+    b.pose.zb = r * b.pose.zb;
+    b.poseKey = mixKey(b.poseKey, static_cast<uint64_t>(std::llround(deg * 1000.0f)));
   }
   return f;
 }

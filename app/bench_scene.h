@@ -13,6 +13,9 @@ namespace haze {
 
 Venue benchVenue(int fixtures);
 FrameState benchFrame(int fixtures);
+// `haze bench --move`'s motion: every beam of `frame` turned by `deg` about the vertical through
+// its lens (a pan that leaves the lens, and so the venue's shadows, in place), its poseKey new.
+FrameState turnedBeams(FrameState frame, float deg);
 // `haze bench --density N`'s field: thin haze (D = 0.4) and one hazer at the deck's stage-left
 // edge blowing across the stage, on N^3 cells over the venue, 60 s after it started.
 DensitySpec benchDensity(int cellsPerSide);

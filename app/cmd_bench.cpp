@@ -1,5 +1,5 @@
 // haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME]] [--width W --height H] [--quality Q]
-//            [--frames K] [--compare-reference] --json
+//            [--frames K] [--move DEG [--map-budget MS]] [--compare-reference] --json
 //            [--planes N] [--scatter-divisor D] [--min-samples M] (override the preset's values)
 // Renders the bench scene (app/bench_scene.*) or a show's cue headless and reports the median
 // time per frame and per pass, with shadow and light maps cached after the first (cold) frame,
@@ -138,7 +138,7 @@ constexpr const char* kBenchUsage =
     "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
     "                  [--min-samples M] [--refine C] [--density N] [--no-bodies | --compare-bodies] [--sun]\n"
     "                  [--shadows soft|hard|compare] [--compare-particles [--particle-density N]]\n"
-    "                  [--compare-reference] [--json]\n"
+    "                  [--move DEG [--map-budget MS]] [--compare-reference] [--json]\n"
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
     "first unless --cue, from the show's first camera unless --camera) per frame and per pass;\n"
@@ -155,7 +155,10 @@ constexpr const char* kBenchUsage =
     "--sun also renders the frame with a sun (azimuth 250, elevation 35, 50000 lux; a show's own sun is left\n"
     "out of the base frame), alternating frame by frame, and gives its cost ratio (docs/rendering.md, \"The sun\").\n"
     "--compare-particles renders it with visible dust too (--particle-density N per m^3), alternating, and\n"
-    "gives the cost ratio.\n";
+    "gives the cost ratio.\n"
+    "--move DEG turns every beam by DEG more about its lens each frame (a pan sweep: every shadow map is out\n"
+    "of date each frame) and gives the frames' median and longest times; --map-budget MS spreads the maps'\n"
+    "redraws over frames as the GUI does (docs/rendering.md, \"Map work spread over frames\").\n";
 
 int runBench(const Args& args) {
   int fixtures = -1, width = 1280, height = 720, frames = 5;
@@ -166,6 +169,7 @@ int runBench(const Args& args) {
   int planes = 0, divisor = 0, minSamples = -1;  // 0 / -1: the preset's
   double refine = -1.0;                            // -1: the preset's
   int densityCells = 0;
+  double moveDeg = 0.0, mapBudgetMs = 0.0;
   CommandLine cli("haze bench", kBenchUsage);
   cli.integer("--fixtures", fixtures, 0, 4096, "0..4096")
       .text("--show", showPath, "a show file")
@@ -189,7 +193,9 @@ int runBench(const Args& args) {
       .number("--refine", refine, 0.0, 2.0, "0..2 (0 = no refinement)")
       .integer("--density", densityCells, 2, kMaxDensityCellsPerSide, "2..256 cells per side")
       .choice("--cells", cells, {"separate", "merged"})
-      .choice("--shadows", shadows, {"soft", "hard", "compare"});
+      .choice("--shadows", shadows, {"soft", "hard", "compare"})
+      .number("--move", moveDeg, 0.0, 90.0, "0..90 degrees per frame")
+      .number("--map-budget", mapBudgetMs, 0.0, 1e6, "milliseconds, 0 = unlimited");
   if (auto done = cli.parse(args)) return *done;
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
@@ -221,6 +227,9 @@ int runBench(const Args& args) {
     return fail("--sun excludes --density, --compare-bodies and --compare-particles");
   if (compareParticles && (compareBodies || densityCells > 0))
     return fail("--compare-particles excludes --compare-bodies and --density");
+  if (mapBudgetMs > 0.0 && moveDeg <= 0.0) return fail("--map-budget needs --move");
+  if (moveDeg > 0.0 && (compareBodies || densityCells > 0 || sun || compareParticles || compareShadows))
+    return fail("--move excludes --density, --compare-bodies, --sun, --compare-particles and --shadows compare");
   if (noBodies) {  // the fixtures' housings left out, as haze render --no-bodies does
     frame.bodies.clear();
     frame.bodyMeshes.clear();
@@ -231,6 +240,7 @@ int runBench(const Args& args) {
   if (divisor > 0) settings.scatterDivisor = divisor;
   if (minSamples >= 0) settings.minSamplesPerChord = minSamples;
   if (refine >= 0.0) settings.refineCurvature = static_cast<float>(refine);
+  settings.mapWorkBudgetMs = mapBudgetMs;
   auto renderer = Renderer::create(venue, settings);
   if (!renderer) return fail(renderer.error().str());
   // The same frame through a density field, on a renderer of its own, alternating with the
@@ -289,7 +299,11 @@ int runBench(const Args& args) {
   int beamsInView = 0, shadowSize = 0, lightLayers = 0;
   double beamsPerTile = 0.0;
   std::vector<std::string> warnings;
+  std::vector<double> mapsPerFrame;  // with --move: shadow maps drawn and light maps baked
+  int mapsPendingMax = 0;
+  const FrameState still = frame;
   for (int f = 0; f <= frames; ++f) {
+    if (moveDeg > 0.0 && f > 0) frame = turnedBeams(still, static_cast<float>(moveDeg * f));
     const auto t0 = std::chrono::steady_clock::now();
     const double cpu0 = processCpuMs();
     (*renderer)->render(frame);
@@ -306,6 +320,8 @@ int runBench(const Args& args) {
     }
     total.push_back(ms);
     cpu.push_back(processCpuMs() - cpu0);
+    mapsPerFrame.push_back(t.shadowMapsRendered + t.lightMapsBaked);
+    mapsPendingMax = std::max(mapsPendingMax, t.mapsPending);
     if (dense) {
       for (int pass = f == 1 ? 0 : 1; pass < 2; ++pass) {  // a cold frame first, as above
         const auto d0 = std::chrono::steady_clock::now();
@@ -381,6 +397,12 @@ int runBench(const Args& args) {
   out["peak_memory_mb"] = peakMemoryMb();
   out["warnings"] = warnings;
   out["shadows"] = frame.softShadows ? "soft" : "hard";
+  if (moveDeg > 0.0)
+    out["move"] = {{"degrees_per_frame", moveDeg},
+                   {"map_budget_ms", mapBudgetMs},
+                   {"longest_frame_ms", *std::max_element(total.begin(), total.end())},
+                   {"median_maps_per_frame", median(mapsPerFrame)},
+                   {"most_maps_pending", mapsPendingMax}};
   if (dense && compareShadows) {
     const double soft = median(total), hard = median(denseTotal);
     const double softCpu = median(cpu), hardCpu = median(denseCpu);
@@ -466,6 +488,10 @@ int runBench(const Args& args) {
                   rs.refineCurvature);
     std::printf("  shadow maps %d px, %d light maps, %.1f beams per lit surface tile; peak memory %.0f MB\n", shadowSize,
                 lightLayers, beamsPerTile, peakMemoryMb());
+    if (moveDeg > 0.0)
+      std::printf("  moving %.2f degrees a frame, map budget %.1f ms (0: none): longest frame %.1f ms, %.0f maps a frame "
+                  "(median), at most %d beams on old maps\n", moveDeg, mapBudgetMs,
+                  out["move"]["longest_frame_ms"].get<double>(), median(mapsPerFrame), mapsPendingMax);
     if (dense && compareShadows)
       std::printf("  hard shadows: %.1f ms per frame (soft %.2fx), %.0f ms CPU (%.2fx), planes %.1f ms (%.2fx), "
                   "surfaces %.1f ms (%.2fx)\n", median(denseTotal), out["shadows_compare"]["ratio_frame"].get<double>(),

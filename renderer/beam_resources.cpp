@@ -1,10 +1,13 @@
 #include "renderer/beam_resources.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <tuple>
 #include <functional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -136,15 +139,33 @@ void BeamResources::ensureShadowCapacity(int beams) {
   glClearTexImage(shadowMin_.id(), 0, GL_RED, GL_FLOAT, &zero);
   shadowKeys_.assign(static_cast<size_t>(shadowCapacity_), 0);  // new layers hold nothing
   reachesM_.assign(static_cast<size_t>(shadowCapacity_), 1e30f);
+  shadowViewProjs_.assign(static_cast<size_t>(shadowCapacity_), glm::mat4(1.0f));
+  shadowFixtures_.assign(static_cast<size_t>(shadowCapacity_), 0);
+  shadowStaleSince_.assign(static_cast<size_t>(shadowCapacity_), 0);
 }
 
-void BeamResources::ensureLightCapacity(int layers) {
+void BeamResources::ensureLightCapacity(int layers, bool keep) {
   if (maxLayers_ == 0) glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers_);
   layers = std::min(std::max(layers, 1), maxLayers_);
   if (lightMaps_ && layers <= lightCapacity_) return;
+  const int oldCapacity = lightCapacity_;
   lightCapacity_ = std::min(std::max({layers, 4, lightCapacity_ * 2}), maxLayers_);
+  gl::Texture old = std::move(lightMaps_);
   lightMaps_ = gl::Texture(GL_TEXTURE_2D_ARRAY, "light_maps");
   glTextureStorage3D(lightMaps_.id(), 1, GL_R32F, settings_.lightMapSize, settings_.lightMapSize, lightCapacity_);
+  // Under a budget the old maps move into the new array: beams waiting for a new map keep
+  // theirs, and nothing is baked again in one frame.
+  if (keep && old && oldCapacity > 0 && hasStorage(lightMaps_)) {
+    glCopyImageSubData(old.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, lightMaps_.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0,
+                       settings_.lightMapSize, settings_.lightMapSize, oldCapacity);
+    const size_t c = static_cast<size_t>(lightCapacity_);
+    lightKeys_.resize(c, 0);
+    extents_.resize(c, 1.0f);
+    coreCos2_.resize(c, 0.0f);
+    lightScales_.resize(c, 1.0f);
+  } else {
+    keep = false;
+  }
   glTextureParameteri(lightMaps_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(lightMaps_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(lightMaps_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
@@ -152,9 +173,11 @@ void BeamResources::ensureLightCapacity(int layers) {
   const float zero[4] = {0, 0, 0, 0};
   glTextureParameterfv(lightMaps_.id(), GL_TEXTURE_BORDER_COLOR, zero);
   if (!hasStorage(lightMaps_)) lightCapacity_ = 0;
+  if (keep) return;
   lightKeys_.assign(static_cast<size_t>(lightCapacity_), 0);
   extents_.assign(static_cast<size_t>(lightCapacity_), 1.0f);
   coreCos2_.assign(static_cast<size_t>(lightCapacity_), 0.0f);
+  lightScales_.assign(static_cast<size_t>(lightCapacity_), 1.0f);
 }
 
 float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float nearM, float farM, float cutoffRad,
@@ -203,76 +226,197 @@ float BeamResources::renderShadow(int layer, const glm::mat4& viewProj, float ne
 
 BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& venue, const GpuBodies& bodies,
                                       const gl::Program& shadowProgram) {
+  const auto start = std::chrono::steady_clock::now();
+  const bool budgeted = settings_.mapWorkBudgetMs > 0.0;
+  ++updates_;
   BeamUpdateStats stats;
   softShadows_ = frame.softShadows;
   const int n = static_cast<int>(frame.beams.size());
+  const size_t un = static_cast<size_t>(n);
   ensureShadowCapacity(n);
   stats.shadowMapSize = shadowSize_;
+  drawnLightLayers_.resize(un, -1);
+  drawnLightKeys_.resize(un, 0);
+  drawnLightFixtures_.resize(un, 0);
+  lightStaleSince_.resize(un, 0);
 
   // Light-map layers by content: kept where the content is still in use, else reused.
-  std::vector<uint64_t> keys(static_cast<size_t>(n));
+  std::vector<uint64_t> keys(un);
   std::unordered_map<uint64_t, int> layerOf;
-  for (int i = 0; i < n; ++i) {
-    keys[static_cast<size_t>(i)] = lightKey(frame.beams[static_cast<size_t>(i)]);
-    layerOf.emplace(keys[static_cast<size_t>(i)], -1);
+  for (size_t i = 0; i < un; ++i) {
+    keys[i] = lightKey(frame.beams[i]);
+    layerOf.emplace(keys[i], -1);
   }
-  ensureLightCapacity(static_cast<int>(layerOf.size()));
+  // Under a budget a beam whose light map changed may keep its old one (its fallback) for a
+  // while: the layers that hold those stay in use too.
+  std::unordered_map<uint64_t, int> held;  // fallback content -> its layer
+  const auto fallbackLayer = [&](size_t i) {
+    const int l = drawnLightLayers_[i];
+    if (l < 0 || l >= lightCapacity_ || drawnLightFixtures_[i] != frame.beams[i].fixtureId ||
+        lightKeys_[static_cast<size_t>(l)] != drawnLightKeys_[i] || drawnLightKeys_[i] == 0)
+      return -1;
+    return l;
+  };
+  if (budgeted) {
+    const std::unordered_set<uint64_t> baked(lightKeys_.begin(), lightKeys_.end());
+    for (size_t i = 0; i < un; ++i)
+      if (const int l = fallbackLayer(i); l >= 0 && !baked.contains(keys[i]) && !layerOf.contains(drawnLightKeys_[i]))
+        held.emplace(drawnLightKeys_[i], l);
+  }
+  ensureLightCapacity(static_cast<int>(layerOf.size() + held.size()), budgeted);
   std::vector<int> freeLayers;
   for (int l = lightCapacity_ - 1; l >= 0; --l) {
-    auto it = layerOf.find(lightKeys_[static_cast<size_t>(l)]);
+    const uint64_t k = lightKeys_[static_cast<size_t>(l)];
+    auto it = layerOf.find(k);
     if (it != layerOf.end() && it->second < 0) it->second = l;
-    else freeLayers.push_back(l);
+    else if (!held.contains(k)) freeLayers.push_back(l);
   }
-  const int size = settings_.lightMapSize;
-  const std::vector<BodyBound> boxBounds = bodyBounds(frame.bodies), meshBounds = bodyBounds(frame.bodyMeshes);
-  drawn_.assign(static_cast<size_t>(n), 0);
-  gpuBeams_.resize(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    const BeamState& b = frame.beams[static_cast<size_t>(i)];
-    GpuBeam& g = gpuBeams_[static_cast<size_t>(i)];
-    int& layer = layerOf[keys[static_cast<size_t>(i)]];
-    if (layer < 0 && !freeLayers.empty()) {
-      layer = freeLayers.back();
-      freeLayers.pop_back();
-      const LightMap map = b.optics.bakeLightMap(size);
-      if (map.size == size && map.cd.size() == static_cast<size_t>(size) * size) {
-        glTextureSubImage3D(lightMaps_.id(), 0, 0, 0, layer, size, size, 1, GL_RED, GL_FLOAT, map.cd.data());
-        extents_[static_cast<size_t>(layer)] = map.extent;
-        coreCos2_[static_cast<size_t>(layer)] = coreCos2(map, b.optics.cutoffHalfAngleRad());
-      }
-      lightKeys_[static_cast<size_t>(layer)] = keys[static_cast<size_t>(i)];
-      ++stats.lightMapsBaked;
+  std::vector<int> fallback(un, -1);
+  for (size_t i = 0; i < un; ++i)
+    if (budgeted && layerOf[keys[i]] < 0) {
+      const int l = fallbackLayer(i);
+      const uint64_t k = l >= 0 ? lightKeys_[static_cast<size_t>(l)] : 0;
+      if (l >= 0 && (held.contains(k) || layerOf.contains(k))) fallback[i] = l;
     }
+
+  // What each beam's shadow map would be drawn with this frame.
+  const std::vector<BodyBound> boxBounds = bodyBounds(frame.bodies), meshBounds = bodyBounds(frame.bodyMeshes);
+  const int shadowed = std::min(n, shadowCapacity_);
+  struct ShadowJob {
+    float cutoff, farM;
+    glm::mat4 viewProj;
+    ShadowCasters casters;
+    uint64_t key;
+  };
+  std::vector<ShadowJob> shadowJobs(static_cast<size_t>(shadowed));
+  for (int i = 0; i < shadowed; ++i) {
+    const BeamState& b = frame.beams[static_cast<size_t>(i)];
+    ShadowJob& j = shadowJobs[static_cast<size_t>(i)];
+    j.cutoff = b.optics.cutoffHalfAngleRad();
+    j.farM = farthestCornerM(b.pose.lensPosition, venue) * 1.05f;
+    j.viewProj = shadowViewProjection(b, j.farM, j.cutoff);
+    // The casters bounded against the cone (the frustum only adds its corners, where I_eff is 0).
+    j.casters = shadowCasters(b, j.cutoff, boxBounds, meshBounds);
+    j.key = mix(mix(mix(b.poseKey, std::hash<float>{}(j.cutoff)), 2), j.casters.key);
+  }
+
+  // The work: light maps to bake (one per content) and shadow maps to draw. Without a budget,
+  // or where a beam has no usable old map, it is done now; the rest waits its turn.
+  const int size = settings_.lightMapSize;
+  const auto bake = [&](size_t i) {
+    int& layer = layerOf[keys[i]];
+    if (layer >= 0 || freeLayers.empty()) return;
+    const BeamState& b = frame.beams[i];
+    layer = freeLayers.back();
+    freeLayers.pop_back();
+    const LightMap map = b.optics.bakeLightMap(size);
+    if (map.size == size && map.cd.size() == static_cast<size_t>(size) * size) {
+      glTextureSubImage3D(lightMaps_.id(), 0, 0, 0, layer, size, size, 1, GL_RED, GL_FLOAT, map.cd.data());
+      extents_[static_cast<size_t>(layer)] = map.extent;
+      coreCos2_[static_cast<size_t>(layer)] = coreCos2(map, b.optics.cutoffHalfAngleRad());
+    }
+    lightScales_[static_cast<size_t>(layer)] =
+        1.0f / (std::tan(glm::radians(b.optics.fieldAngleDeg) * 0.5f) * extents_[static_cast<size_t>(layer)]);
+    lightKeys_[static_cast<size_t>(layer)] = keys[i];
+    ++stats.lightMapsBaked;
+  };
+  const auto draw = [&](int i) {
+    const ShadowJob& j = shadowJobs[static_cast<size_t>(i)];
+    const size_t l = static_cast<size_t>(i);
+    reachesM_[l] = renderShadow(i, j.viewProj, kShadowNearM, j.farM, j.cutoff, venue, bodies, j.casters, shadowProgram);
+    shadowKeys_[l] = j.key;
+    shadowViewProjs_[l] = j.viewProj;
+    shadowFixtures_[l] = frame.beams[l].fixtureId;
+    ++stats.shadowMapsRendered;
+  };
+  struct Deferred {
+    uint64_t since;
+    int kind;  // 0: bake beam's light map, 1: draw its shadow map
+    int beam;
+  };
+  std::vector<Deferred> deferred;
+  for (int i = 0; i < n; ++i) {
+    const size_t l = static_cast<size_t>(i);
+    if (layerOf[keys[l]] < 0) {
+      if (fallback[l] < 0) {
+        bake(l);
+      } else {
+        if (lightStaleSince_[l] == 0) lightStaleSince_[l] = updates_;
+        deferred.push_back({lightStaleSince_[l], 0, i});
+      }
+    }
+    // A beam with neither light map is not drawn (past the GL's layer limit): no shadow map either.
+    if (layerOf[keys[l]] < 0 && fallback[l] < 0) continue;
+    if (i >= shadowed || shadowKeys_[l] == shadowJobs[l].key) continue;
+    const bool usable = shadowKeys_[l] != 0 && shadowFixtures_[l] == frame.beams[l].fixtureId;
+    if (!budgeted || !usable) {
+      draw(i);
+    } else {
+      // Stale since the first update that found it so (kept while it keeps moving).
+      if (shadowStaleSince_[l] == 0) shadowStaleSince_[l] = updates_;
+      deferred.push_back({shadowStaleSince_[l], 1, i});
+    }
+  }
+  std::sort(deferred.begin(), deferred.end(), [](const Deferred& a, const Deferred& b) {
+    return std::tie(a.since, a.beam, a.kind) < std::tie(b.since, b.beam, b.kind);
+  });
+  // The oldest always goes (every frame progresses); the others while they are expected to end
+  // within the budget (each kind's last time: one map more would overrun it by a whole map).
+  bool first = true;
+  for (const Deferred& d : deferred) {
+    const auto now = std::chrono::steady_clock::now();
+    const double spentMs = std::chrono::duration<double, std::milli>(now - start).count();
+    if (!first && spentMs + lastMapMs_[d.kind] > settings_.mapWorkBudgetMs) break;
+    const size_t l = static_cast<size_t>(d.beam);
+    if (d.kind == 0) {
+      if (layerOf[keys[l]] >= 0) continue;  // another beam with this content was baked already
+      bake(l);
+    } else {
+      draw(d.beam);
+    }
+    lastMapMs_[d.kind] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - now).count();
+    first = false;
+  }
+
+  drawn_.assign(un, 0);
+  gpuBeams_.resize(un);
+  for (int i = 0; i < n; ++i) {
+    const size_t l = static_cast<size_t>(i);
+    const BeamState& b = frame.beams[l];
+    GpuBeam& g = gpuBeams_[l];
+    const int current = layerOf[keys[l]];
+    const int layer = current >= 0 ? current : fallback[l];
     if (layer < 0 || i >= shadowCapacity_) {  // past the GL's layer limit: a dark, disc-less beam
       g = GpuBeam{};
       g.lensPos = glm::vec4(b.pose.lensPosition, 2.0f);  // cos(cutoff) > 1: no direction is inside
       stats.notDrawn.push_back(b.fixtureId);
+      drawnLightLayers_[l] = -1;
       continue;
     }
-    drawn_[static_cast<size_t>(i)] = 1;
-    const float cutoff = b.optics.cutoffHalfAngleRad();
-    const float farM = farthestCornerM(b.pose.lensPosition, venue) * 1.05f;
-    const glm::mat4 viewProj = shadowViewProjection(b, farM, cutoff);
-    // The casters bounded against the cone (the frustum only adds its corners, where I_eff is 0).
-    const ShadowCasters casters = shadowCasters(b, cutoff, boxBounds, meshBounds);
-    const uint64_t shadowKey = mix(mix(mix(b.poseKey, std::hash<float>{}(cutoff)), 2), casters.key);
-    if (shadowKeys_[static_cast<size_t>(i)] != shadowKey) {
-      reachesM_[static_cast<size_t>(i)] =
-          renderShadow(i, viewProj, kShadowNearM, farM, cutoff, venue, bodies, casters, shadowProgram);
-      shadowKeys_[static_cast<size_t>(i)] = shadowKey;
-      ++stats.shadowMapsRendered;
-    }
+    drawn_[l] = 1;
+    const size_t ll = static_cast<size_t>(layer);
+    drawnLightLayers_[l] = layer;
+    drawnLightKeys_[l] = lightKeys_[ll];
+    drawnLightFixtures_[l] = b.fixtureId;
+    const ShadowJob& j = shadowJobs[l];
+    const bool shadowCurrent = shadowKeys_[l] == j.key;
+    if (shadowCurrent) shadowStaleSince_[l] = 0;
+    if (current >= 0) lightStaleSince_[l] = 0;
+    stats.mapsPending += !shadowCurrent || current < 0;
+    const float cutoff = j.cutoff;
     const float tanHalfF = std::tan(glm::radians(b.optics.fieldAngleDeg) * 0.5f);
     g.lensPos = glm::vec4(b.pose.lensPosition, std::cos(cutoff));
-    g.xb = glm::vec4(b.pose.xb, 1.0f / (tanHalfF * extents_[static_cast<size_t>(layer)]));
+    // An old light map keeps the scale it was baked for, an old shadow map the matrix it was
+    // drawn with: lookups read the texels they index.
+    g.xb = glm::vec4(b.pose.xb, current >= 0 ? 1.0f / (tanHalfF * extents_[ll]) : lightScales_[ll]);
     g.yb = glm::vec4(b.pose.yb, static_cast<float>(layer));
     g.zb = glm::vec4(b.pose.zb, static_cast<float>(i));
     g.color = glm::vec4(b.optics.color * b.optics.dimmer, std::tan(cutoff));
-    g.shadowViewProj = viewProj;
+    g.shadowViewProj = shadowCurrent ? j.viewProj : shadowViewProjs_[l];
     // A radius of 0 draws no disc (a degenerate quad): tests use it to see the in-scattering alone.
     const float rl = std::max(b.optics.lensRadiusM, 0.0f);
-    g.lens = glm::vec4(rl, rl > 0.0f ? 1.0f / (3.14159265f * rl * rl) : 0.0f, coreCos2_[static_cast<size_t>(layer)],
-                       1.0f / std::max(reachesM_[static_cast<size_t>(i)], 1e-3f));
+    g.lens = glm::vec4(rl, rl > 0.0f ? 1.0f / (3.14159265f * rl * rl) : 0.0f, coreCos2_[ll],
+                       1.0f / std::max(reachesM_[l], 1e-3f));
   }
   stats.lightMapLayers = static_cast<int>(layerOf.size());
   if (!stats.notDrawn.empty()) {

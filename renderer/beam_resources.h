@@ -7,6 +7,12 @@
 // Memory is bounded (docs/rendering.md, "Large rigs"): beams with equal optics share one
 // light-map layer, and the shadow maps' layer size shrinks so that all of them fit a texel
 // budget. Beams beyond the GL's array-layer limit cannot be drawn; update() names them.
+//
+// Time is bounded on request (BeamResourceSettings::mapWorkBudgetMs, docs/rendering.md, "Map
+// work spread over frames"): an interactive caller lets a cue that moves a whole rig redraw
+// its maps over several frames, the beams that have waited longest first. Until its turn a
+// beam keeps the maps it had, with the shadow matrix and reach its shadow map was drawn with,
+// so that every lookup reads the map it indexes (the old pose's shadow).
 #pragma once
 
 #include <algorithm>
@@ -36,6 +42,8 @@ struct BeamResourceSettings {
   // smaller maps, all of one size (the array's layers).
   int64_t shadowTexelBudget = int64_t{32} << 20;
   bool shadowMinPyramid = true;  // RenderSettings::shadowMinPyramid
+  // RenderSettings::mapWorkBudgetMs: 0 renders every changed map in its frame.
+  double mapWorkBudgetMs = 0.0;
 };
 
 struct BeamUpdateStats {
@@ -43,6 +51,8 @@ struct BeamUpdateStats {
   int shadowMapsRendered = 0;
   int shadowMapSize = 0;  // the layers' size this frame (shadowMapSize or less, see the budget)
   int lightMapLayers = 0; // distinct light maps
+  // Beams drawn with an out-of-date shadow or light map (the budget deferred their new one).
+  int mapsPending = 0;
   // Fixture ids of the beams that could not be drawn (a GL limit), with the reason; empty
   // when every beam is drawn.
   std::vector<int> notDrawn;
@@ -66,6 +76,7 @@ class BeamResources {
   int count() const { return static_cast<int>(gpuBeams_.size()); }
   const std::vector<GpuBeam>& beams() const { return gpuBeams_; }
   const BeamResourceSettings& settings() const { return settings_; }
+  void setMapWorkBudgetMs(double ms) { settings_.mapWorkBudgetMs = ms; }
   // Whether beam i has its maps this frame (false: a GL limit left it out; it adds nothing).
   bool drawn(int i) const { return drawn_[static_cast<size_t>(i)] != 0; }
   int drawnCount() const { return static_cast<int>(std::count(drawn_.begin(), drawn_.end(), 1)); }
@@ -77,8 +88,9 @@ class BeamResources {
  private:
   // Makes the shadow-map array for `beams` layers of the budget's size (kept while both hold).
   void ensureShadowCapacity(int beams);
-  // Makes the light-map array for `layers` distinct light maps (everything is baked again).
-  void ensureLightCapacity(int layers);
+  // Makes the light-map array for `layers` distinct light maps; everything is baked again
+  // unless `keep` (the old layers are copied over).
+  void ensureLightCapacity(int layers, bool keep);
   // Renders a shadow map and returns the beam's reach (see reachM).
   float renderShadow(int layer, const glm::mat4& viewProj, float nearM, float farM, float cutoffRad,
                      const GpuVenue& venue, const GpuBodies& bodies, const ShadowCasters& casters,
@@ -98,8 +110,21 @@ class BeamResources {
   bool softShadows_ = false;
   std::vector<uint64_t> lightKeys_;    // per light-map layer, what is baked there (0: nothing)
   std::vector<float> extents_;         // per light-map layer
-  std::vector<uint64_t> shadowKeys_;   // per beam (= shadow layer)
+  std::vector<float> lightScales_;     // per light-map layer: GpuBeam::xb.w of the beams it was baked for
+  std::vector<uint64_t> shadowKeys_;   // per beam (= shadow layer); 0: no map
   std::vector<float> reachesM_;        // per beam
+  // Per shadow layer: the matrix its map was drawn with and the fixture it belongs to.
+  std::vector<glm::mat4> shadowViewProjs_;
+  std::vector<int> shadowFixtures_;
+  // Per beam: the update since which its shadow map, or its light map, has been out of date.
+  std::vector<uint64_t> shadowStaleSince_, lightStaleSince_;
+  // Per beam: the light-map layer it was last drawn with, what that layer held then, and the
+  // fixture (a beam's old light map is its fallback only while both still hold).
+  std::vector<int> drawnLightLayers_;
+  std::vector<uint64_t> drawnLightKeys_;
+  std::vector<int> drawnLightFixtures_;
+  uint64_t updates_ = 0;
+  double lastMapMs_[2] = {0.0, 0.0};  // the last deferred light-map bake's and shadow map's times
   std::vector<char> drawn_;            // per beam
   std::vector<float> coreCos2_;        // per light-map layer: the map's core (beam_resources.cpp)
   std::vector<float> depthScratch_;

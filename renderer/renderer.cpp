@@ -77,7 +77,9 @@ struct Renderer::Impl {
                               gl::TimerQuery{"beams_time"}, gl::TimerQuery{"particles_time"}};
 
   Impl(const Venue& v, const RenderSettings& s)
-      : venue(v, s.cullVenueChunks), beams(BeamResourceSettings{s.lightMapSize, s.shadowMapSize, s.shadowTexelBudget, s.shadowMinPyramid}) {}
+      : venue(v, s.cullVenueChunks),
+        beams(BeamResourceSettings{s.lightMapSize, s.shadowMapSize, s.shadowTexelBudget, s.shadowMinPyramid,
+                                   s.mapWorkBudgetMs}) {}
 
   // (Re)makes the targets whose size is the image's; nothing else depends on it.
   Status allocateTargets(int w, int h);
@@ -179,6 +181,11 @@ Status Renderer::resize(int width, int height) {
   return Ok{};
 }
 
+void Renderer::setMapWorkBudgetMs(double ms) {
+  settings_.mapWorkBudgetMs = ms;
+  impl_->beams.setMapWorkBudgetMs(ms);
+}
+
 void Renderer::render(const FrameState& frame, bool accumulate) {
   Impl& m = *impl_;
   times_ = {};
@@ -198,6 +205,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
   times_.sunMapRendered = m.sun.update(frame, m.venue, m.shadowProgram);
   end();
   times_.shadowMapsRendered = stats.shadowMapsRendered;
+  times_.mapsPending = stats.mapsPending;
   times_.lightMapsBaked = stats.lightMapsBaked;
   times_.shadowMapSize = stats.shadowMapSize;
   times_.lightMapLayers = stats.lightMapLayers;

@@ -51,6 +51,11 @@ struct RenderSettings {
   int64_t shadowTexelBudget = int64_t{32} << 20;
   // Times each pass with GL timer queries (lastTimes()); off, nothing waits on the GL.
   bool timePasses = false;
+  // CPU wall time per render for redrawing changed shadow maps and baking changed light maps
+  // (docs/rendering.md, "Map work spread over frames"): past it the remaining beams keep their
+  // old maps until a later render, the longest waiting first, at least one map per render.
+  // 0: every changed map in its render (a still image, the bench, tests).
+  double mapWorkBudgetMs = 0.0;
 };
 
 struct DisplaySettings {
@@ -71,6 +76,9 @@ struct PassTimes {
   int shadowMapsRendered = 0, lightMapsBaked = 0;
   bool sunMapRendered = false;
   int shadowMapSize = 0, lightMapLayers = 0;  // see BeamUpdateStats
+  // Beams drawn with an out-of-date shadow or light map (RenderSettings::mapWorkBudgetMs); the
+  // image is final only when this is 0.
+  int mapsPending = 0;
   int beamsDrawn = 0;                // in-scattering footprints drawn (in view, lit)
   int bodyMeshesDrawn = 0;           // posed body meshes drawn by the camera (in its frustum)
   double beamsPerTile = 0;           // surfaces: beams tried per lit 4x4 tile (timePasses only)
@@ -115,6 +123,8 @@ class Renderer {
   // line each; empty when it drew everything. Callers show these to the user.
   const std::vector<std::string>& warnings() const { return warnings_; }
   const RenderSettings& settings() const { return settings_; }
+  // Changes RenderSettings::mapWorkBudgetMs from the next render on (0 catches up at once).
+  void setMapWorkBudgetMs(double ms);
 
  private:
   struct Impl;
