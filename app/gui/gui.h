@@ -103,6 +103,8 @@ struct Gui {
   double draftBudgetMs = 50.0;
   float draftScale = 1.0f;     // the last draft frame's linear scale
   bool draftLimited = false;   // the budget was not met even at the smallest scale
+  bool drewDraft = false;      // the last frame was a draft (the view or the stage moved)
+  int mapsPending = 0;         // beams shown with out-of-date maps while the renderer catches up
   bool showHelp = false;
   // The last MVR import's warnings, folded (shows/import/mvr_import.h groupMvrWarnings), in a window.
   std::vector<std::string> importWarnings;

@@ -233,6 +233,9 @@ void drawPanels(Gui& gui, int winW, int winH) {
   ImGui::Render();
 }
 
+// Milliseconds of shadow-map and light-map work per frame (at least one map a frame).
+constexpr double kMapBudgetMs = 15.0;
+
 // Two renderers: draft while anything moves, the chosen quality when still.
 struct ViewportRenderers {
   std::unique_ptr<Renderer> draft, still;
@@ -267,9 +270,14 @@ struct ViewportRenderers {
       return Ok{};
     }
     // A new document may have a new venue: the renderers are made for one venue.
-    auto d = Renderer::create(gui.doc->venue(), renderSettingsFor(Quality::Draft, dw, dh));
+    // Maps of moving beams are redrawn a few per frame (RenderSettings::mapWorkBudgetMs): 76
+    // heads in a fade would otherwise redraw 76 shadow maps in every frame.
+    RenderSettings draftSettings = renderSettingsFor(Quality::Draft, dw, dh);
+    RenderSettings stillSettings = renderSettingsFor(gui.quality, vw, vh);
+    draftSettings.mapWorkBudgetMs = stillSettings.mapWorkBudgetMs = kMapBudgetMs;
+    auto d = Renderer::create(gui.doc->venue(), draftSettings);
     if (!d) return d.error();
-    auto s = Renderer::create(gui.doc->venue(), renderSettingsFor(gui.quality, vw, vh));
+    auto s = Renderer::create(gui.doc->venue(), stillSettings);
     if (!s) return s.error();
     draft = std::move(*d);
     still = std::move(*s);
@@ -350,6 +358,7 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   glClear(GL_COLOR_BUFFER_BIT);
   Renderer* r = nullptr;
   const bool settled = !changing && gui.stillFrames >= kMaxStillFrames;
+  gui.drewDraft = changing;
   if (changing) {
     r = renderers.draft.get();
     r->render(*frameState);
@@ -358,9 +367,12 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
     r = renderers.still.get();
     if (!settled) {
       r->render(*frameState, gui.stillFrames > 0);  // keep adding jittered frames while still
-      ++gui.stillFrames;
+      // Frames with maps still being redrawn are not refined: accumulation starts once they are current.
+      if (r->lastTimes().mapsPending > 0) gui.stillFrames = 0;
+      else ++gui.stillFrames;
     }
   }
+  gui.mapsPending = r->lastTimes().mapsPending;
   // What the renderer could not draw goes on the status line (once, not every frame).
   const std::string warning = r->warnings().empty() ? "" : r->warnings().front();
   if (warning != gui.renderWarning && !warning.empty()) gui.say(warning, true);
@@ -389,7 +401,7 @@ struct DraftPacing {
     const auto now = std::chrono::steady_clock::now();
     const double ms = std::chrono::duration<double, std::milli>(now - lastSwap).count();
     lastSwap = now;
-    if (gui.stillFrames == 0 && !waited && renderers.width > 0) {
+    if (gui.drewDraft && !waited && renderers.width > 0) {
       draftMs.push_back(ms);
       gui.draftScale = static_cast<float>(renderers.draftWidth) / static_cast<float>(renderers.width);
       renderers.draftScale.update(ms);

@@ -177,7 +177,8 @@ void drawMenuBar(Gui& gui) {
   if (ImGui::MenuItem("Focus", "F", gui.tool == Tool::Focus)) startFocus(gui);
   ImGui::Separator();
   char timing[64];
-  if (gui.stillFrames > 0) std::snprintf(timing, sizeof(timing), "%4.0f ms  refining %d", gui.frameMs, gui.stillFrames);
+  if (gui.mapsPending > 0) std::snprintf(timing, sizeof(timing), "%4.0f ms  catching up: %d maps", gui.frameMs, gui.mapsPending);
+  else if (gui.stillFrames > 0) std::snprintf(timing, sizeof(timing), "%4.0f ms  refining %d", gui.frameMs, gui.stillFrames);
   else if (gui.draftScale < 1.0f)
     std::snprintf(timing, sizeof(timing), "%4.0f ms  draft at %.0f %%%s", gui.frameMs, 100.0f * gui.draftScale,
                   gui.draftLimited ? ", over budget" : "");
