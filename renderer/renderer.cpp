@@ -64,6 +64,8 @@ struct Renderer::Impl {
   gl::Texture gbuffer;
   gl::Framebuffer gbufferFbo{"gbuffer_fbo"};
   gl::Sampler mipSampler{"radiance_mips"};  // for bloom: trilinear over the radiance's mip levels
+  // For an image drawn larger than it was rendered (the GUI's reduced drafts): bilinear, not blocks.
+  gl::Sampler stretchSampler{"radiance_stretched"};
   gl::Framebuffer sceneFbo{"scene_fbo"}, displayFbo{"display_fbo"};
   // The radiance target without its depth, for passes that read the scene depth as a texture.
   gl::Framebuffer radianceOnlyFbo{"radiance_only_fbo"};
@@ -168,6 +170,10 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glSamplerParameteri(impl->mipSampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(impl->stretchSampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(impl->stretchSampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(impl->stretchSampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(impl->stretchSampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   if (Status targets = impl->allocateTargets(settings.width, settings.height); !targets) return targets.error();
   return std::unique_ptr<Renderer>(new Renderer(std::move(impl), settings));
 }
@@ -391,10 +397,13 @@ void Renderer::drawDisplay(const DisplaySettings& display, unsigned int framebuf
     glGenerateTextureMipmap(m.radiance.id());
   }
   glBindTextureUnit(HAZE_UNIT_RADIANCE, m.radiance.id());
+  const bool stretched = width != settings_.width || height != settings_.height;
+  glBindSampler(HAZE_UNIT_RADIANCE, stretched ? m.stretchSampler.id() : 0);
   glBindTextureUnit(HAZE_UNIT_RADIANCE_MIPS, m.radiance.id());
   glBindSampler(HAZE_UNIT_RADIANCE_MIPS, m.mipSampler.id());
   glBindVertexArray(m.emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindSampler(HAZE_UNIT_RADIANCE, 0);
   glBindSampler(HAZE_UNIT_RADIANCE_MIPS, 0);
 }
 
