@@ -28,18 +28,6 @@ constexpr float kCameraHeightM = 10.0f;
 constexpr float kCameraFovDeg = 20.0f;
 constexpr float kInnerGate = 0.87f;  // gate radius inside which the pool is checked
 
-// A disc image whose top half (t > 0.5, +y of the disc) is opaque: 1024 pixels across the disc's
-// six gate radii, so the bilinear edge is 0.006 gate radii wide, a third of a pixel here.
-std::shared_ptr<GoboImage> topHalfOpaque() {
-  constexpr int n = 1024;
-  auto g = std::make_shared<GoboImage>();
-  g->width = g->height = n;
-  g->transmittance.resize(static_cast<size_t>(n) * n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) g->transmittance[static_cast<size_t>(j) * n + i] = j < n / 2 ? 0.0f : 1.0f;
-  return g;
-}
-
 FrameState floorFrame(float discAngleDeg) {
   FrameState f;
   f.camera.position = {0.0f, kCameraHeightM, 0.0f};
@@ -48,7 +36,9 @@ FrameState floorFrame(float discAngleDeg) {
   f.camera.fovYDeg = kCameraFovDeg;
   BeamState b = makeBeam({0.0f, kLensHeightM, 0.0f}, {0.0f, -1.0f, 0.0f}, 24.0f, kFieldDeg, 20000.0f);
   b.pose = beamFrame({0.0f, kLensHeightM, 0.0f}, {0.0f, -1.0f, 0.0f}, {1.0f, 0.0f, 0.0f});
-  b.optics.animation = topHalfOpaque();
+  // The top half (t > 0.5, +y of the disc) opaque: 1024 pixels across the disc's six gate radii,
+  // so the bilinear edge is 0.006 gate radii wide, a third of a pixel here.
+  b.optics.animation = halfOpaqueGobo(1024, true);
   b.optics.animationAngleDeg = discAngleDeg;
   f.beams.push_back(b);
   return f;

@@ -27,18 +27,6 @@ constexpr float kFieldDeg = 30.0f;
 constexpr float kCameraHeightM = 10.0f;
 constexpr float kCameraFovDeg = 20.0f;
 
-// Transmittance 1 for s >= 0.5 (+x_b half), 0 for the other half: 1024 pixels across the gate's
-// diameter, so the sharp edge is 0.002 gate radii wide.
-std::shared_ptr<GoboImage> rightHalfOpen() {
-  constexpr int n = 1024;
-  auto g = std::make_shared<GoboImage>();
-  g->width = g->height = n;
-  g->transmittance.resize(static_cast<size_t>(n) * n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) g->transmittance[static_cast<size_t>(j) * n + i] = i < n / 2 ? 0.0f : 1.0f;
-  return g;
-}
-
 FrameState floorFrame(bool gobo, float blur) {
   FrameState f;
   f.camera.position = {0.0f, kCameraHeightM, 0.0f};
@@ -47,7 +35,9 @@ FrameState floorFrame(bool gobo, float blur) {
   f.camera.fovYDeg = kCameraFovDeg;
   BeamState b = makeBeam({0.0f, kLensHeightM, 0.0f}, {0.0f, -1.0f, 0.0f}, 24.0f, kFieldDeg, 20000.0f);
   b.pose = beamFrame({0.0f, kLensHeightM, 0.0f}, {0.0f, -1.0f, 0.0f}, {1.0f, 0.0f, 0.0f});
-  if (gobo) b.optics.gobo = rightHalfOpen();
+  // Open for s >= 0.5 (the +x_b half): 1024 pixels across the gate's diameter, so the sharp edge
+  // is 0.002 gate radii wide.
+  if (gobo) b.optics.gobo = halfOpaqueGobo(1024, false);
   b.optics.focusBlur = blur;
   f.beams.push_back(b);
   return f;

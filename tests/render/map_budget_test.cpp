@@ -155,20 +155,9 @@ TEST_F(MapBudget, ANewBeamGetsItsMapAtOnce) {
   }
 }
 
-// A light map whose top half (+y of the gate) is opaque: turning it changes the map, not the cone.
-std::shared_ptr<GoboImage> halfGobo() {
-  constexpr int n = 64;
-  auto g = std::make_shared<GoboImage>();
-  g->width = g->height = n;
-  g->transmittance.resize(static_cast<size_t>(n) * n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) g->transmittance[static_cast<size_t>(j) * n + i] = j < n / 2 ? 0.0f : 1.0f;
-  return g;
-}
-
 FrameState goboFrame(const std::vector<float>& rotationsDeg) {
   FrameState f = benchFrame(kBeams);
-  const auto gobo = halfGobo();
+  const auto gobo = halfOpaqueGobo(64, true);  // +y half opaque: turning it changes the map, not the cone
   for (size_t i = 0; i < f.beams.size(); ++i) {
     f.beams[i].optics.gobo = gobo;
     f.beams[i].optics.goboRotationDeg = rotationsDeg[i];

@@ -19,6 +19,15 @@ ImageRGB renderRadiance(const Venue& venue, const FrameState& frame, const Rende
   return (*r)->readRadiance();
 }
 
+std::shared_ptr<GoboImage> halfOpaqueGobo(int n, bool opaqueRows) {
+  auto g = std::make_shared<GoboImage>();
+  g->width = g->height = n;
+  g->transmittance.resize(static_cast<size_t>(n) * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) g->transmittance[static_cast<size_t>(j) * n + i] = (opaqueRows ? j : i) < n / 2 ? 0.0f : 1.0f;
+  return g;
+}
+
 Venue floorVenue(float sizeM, float albedo) {
   Venue v = emptyVenue();
   addFloor(v, 0.0f, sizeM * 0.5f, haze::addMaterial(v, "floor", glm::vec3(albedo)));

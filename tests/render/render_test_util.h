@@ -53,6 +53,10 @@ BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldD
 // lens the file's luminous opening (or the default when the file gives none).
 BeamState fileBeam(const std::string& relativePath, glm::vec3 lensPos, glm::vec3 dir);
 
+// An n x n gobo, half opaque and half open: the rows j < n / 2 opaque (`opaqueRows`), or the
+// columns i < n / 2.
+std::shared_ptr<GoboImage> halfOpaqueGobo(int n, bool opaqueRows);
+
 // Writes <name>.actual.pfm, <name>.expected.pfm and <name>.diff.pfm into HAZE_TEST_OUTPUT_DIR
 // (the build tree's test-output/, never the source tree) and returns the files written.
 std::vector<std::filesystem::path> writeDiagnostics(const std::string& name, const ImageRGB& actual,
