@@ -55,14 +55,8 @@ JSON
 "$haze" validate "$tmp/anim.haze.json" >"$tmp/validate.txt" 2>&1; rc=$?
 check "the animation show validates (exit $rc: $(head -3 "$tmp/validate.txt"))" '[ $rc -eq 0 ]'
 source "$root/tests/cli/schema_check.bash"
-if [ -x "$schema_ajv" ]; then
-  conforms show.schema.json "$tmp/anim.haze.json" "$tmp/ajv.txt"; rc=$?
-  check "the show conforms to the show schema (exit $rc: $(tail -2 "$tmp/ajv.txt"))" '[ $rc -eq 0 ]'
-  conforms fixture.schema.json "$tmp/p/anim.json" "$tmp/ajv2.txt"; rc=$?
-  check "the profile conforms to the fixture schema (exit $rc: $(tail -2 "$tmp/ajv2.txt"))" '[ $rc -eq 0 ]'
-else
-  echo "FAIL: $schema_ajv missing (make node-tools)"; fail=$((fail + 1))
-fi
+check_conforms show.schema.json "$tmp/anim.haze.json" "the show"
+check_conforms fixture.schema.json "$tmp/p/anim.json" "the profile"
 
 "$haze" fixture info "$tmp/p/anim.json" --json >"$tmp/anim-info.json" 2>/dev/null
 check "fixture info lists the native profile's animation wheel" 'node -e "
