@@ -91,10 +91,12 @@ class BeamResources {
   // Makes the light-map array for `layers` distinct light maps; everything is baked again
   // unless `keep` (the old layers are copied over).
   void ensureLightCapacity(int layers, bool keep);
-  // Renders a shadow map and returns the beam's reach (see reachM).
-  float renderShadow(int layer, const glm::mat4& viewProj, float nearM, float farM, float cutoffRad,
-                     const GpuVenue& venue, const GpuBodies& bodies, const ShadowCasters& casters,
-                     const gl::Program& program);
+  // Draws a shadow map.
+  void drawShadow(int layer, const glm::mat4& viewProj, const GpuVenue& venue, const GpuBodies& bodies,
+                  const ShadowCasters& casters, const gl::Program& program);
+  // Reads a drawn map back (waiting for it), makes its least-depth pyramid and returns the
+  // beam's reach (see reachM).
+  float readShadow(int layer, float nearM, float farM, float cutoffRad);
 
   BeamResourceSettings settings_;
   int maxLayers_ = 0;        // GL_MAX_ARRAY_TEXTURE_LAYERS
