@@ -340,12 +340,8 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
     const ShadowJob& j = shadowJobs[static_cast<size_t>(i)];
     const size_t l = static_cast<size_t>(i);
     drawShadow(i, j.viewProj, venue, bodies, j.casters, shadowProgram);
-    if (budgeted) {
-      reachesM_[l] = readShadow(i, kShadowNearM, j.farM, j.cutoff);
-      return;
-    }
     unread.push_back(i);
-    if (unread.size() >= static_cast<size_t>(kShadowReadBatch)) readUnread();
+    if (budgeted || unread.size() >= static_cast<size_t>(kShadowReadBatch)) readUnread();
     shadowKeys_[l] = j.key;
     shadowViewProjs_[l] = j.viewProj;
     shadowFixtures_[l] = frame.beams[l].fixtureId;
