@@ -42,7 +42,7 @@ test-fast: build
 # The second tree is configured without the GUI (HAZE_BUILD_GUI=OFF: no GLFW, no ImGui), so
 # CI proves the libraries and the headless program build without them. Under the sanitizers it
 # runs the unit suites (one per pure library, no GL) and the headless program on the demo.
-UNIT_SUITES := unit_core unit_atmosphere unit_fixtures unit_gdtf unit_scene unit_reference unit_shows unit_dmx unit_edit unit_import \
+UNIT_SUITES := unit_core unit_atmosphere unit_fixtures unit_gdtf unit_scene unit_reference unit_shows unit_dmx unit_edit unit_import unit_frame unit_output \
                unit_mesh unit_fuzz_replay
 
 $(ASAN_BUILD)/build.ninja:

@@ -3,8 +3,8 @@
 
 #include <cstdio>
 
-#include "app/atmosphere_field.h"
-#include "app/frame_builder.h"
+#include "shows/frame/atmosphere_field.h"
+#include "shows/frame/frame_builder.h"
 #include "shows/hazer_levels.h"
 #include "shows/playback.h"
 #include "shows/show.h"

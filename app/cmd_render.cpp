@@ -1,7 +1,7 @@
 // haze render SHOW [--cue N | --all-cues | --timecode hh:mm:ss:ff] [--at S] [--list NAME] [--camera NAME]
 //                  [--width W --height H] [--quality Q] [--exposure EV] [--exposure-mode auto|manual]
 //                  [--bloom F] [--exr-pixel half|float] -o OUT.(png|pfm|exr) | DIR/
-// haze render SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] ... -o OUT (app/list_plays.h)
+// haze render SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] ... -o OUT (shows/frame/list_plays.h)
 // haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--from CUE] [--to CUE] [--fps N]
 //                  [--hold S] [--duration S] [--codec NAME] [--progress] [--timecode START] (docs/output.md)
 #include <algorithm>
@@ -12,7 +12,7 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
-#include "app/list_plays.h"
+#include "shows/frame/list_plays.h"
 #include "app/progress.h"
 #include "app/render_session.h"
 #include "shows/hazer_levels.h"
@@ -20,7 +20,7 @@
 #include "app/render_video.h"
 #include "shows/playback.h"
 #include "shows/show.h"
-#include "shows/dmx/live_playback.h"
+#include "shows/frame/live_playback.h"
 #include "shows/timecode.h"
 
 namespace haze {
@@ -182,10 +182,17 @@ int runRender(const Args& args) {
   if (!session) return fail(session.error().str());
 
   if (!video.empty()) {
-    VideoJob job{.list = cueList, .from = 0, .to = cueList->cues.size() - 1, .holdS = hold, .durationS = duration,
-                 .fps = fps, .codec = codec, .out = video, .progress = progress, .caption = caption,
-                 .realMovement = movement == "real", .timecodeStart = timecode, .timecodeRate = rate};
-    for (auto [number, index] : {std::pair{&from, &job.from}, std::pair{&to, &job.to}}) {
+    VideoJob job{.codec = codec, .out = video, .progress = progress, .caption = caption};
+    VideoPlan& plan = job.plan;
+    plan.list = cueList;
+    plan.to = cueList->cues.size() - 1;
+    plan.holdS = hold;
+    plan.durationS = duration;
+    plan.fps = fps;
+    plan.realMovement = movement == "real";
+    plan.timecodeStart = timecode;
+    plan.timecodeRate = rate;
+    for (auto [number, index] : {std::pair{&from, &plan.from}, std::pair{&to, &plan.to}}) {
       if (number->empty()) continue;
       auto found = findCue(*cueList, *number);
       if (!found) return fail(showPath + ": " + found.error().message);
@@ -195,10 +202,10 @@ int runRender(const Args& args) {
       if (!from.empty() || !to.empty()) return fail("--timeline gives the GOs itself: no --from or --to with it");
       auto timeline = readTimeline(timelineFile, *show, *cueList, hold);
       if (!timeline) return fail(timeline.error().str());
-      job.timeline = std::move(*timeline);
+      plan.timeline = std::move(*timeline);
     }
-    if (job.from > job.to)
-      return fail("--from " + cueList->cues[job.from].number + " comes after --to " + cueList->cues[job.to].number +
+    if (plan.from > plan.to)
+      return fail("--from " + cueList->cues[plan.from].number + " comes after --to " + cueList->cues[plan.to].number +
                   " in cue list '" + cueList->name + "'");
     const auto s = renderVideo(**session, *show, *profiles, job);
     if (!s) return fail(s.error().str());

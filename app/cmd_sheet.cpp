@@ -11,7 +11,7 @@
 #include "app/commands.h"
 #include "app/progress.h"
 #include "app/render_session.h"
-#include "app/state_json.h"
+#include "shows/frame/state_json.h"
 #include "renderer/output/sheet_pdf.h"
 #include "shows/hazer_levels.h"
 #include "shows/playback.h"

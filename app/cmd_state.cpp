@@ -1,20 +1,20 @@
 // `haze state SHOW --cue N [--at S] [--list NAME] [--follow] [--json]`: every fixture's attributes
 // S seconds after GO into cue N from the full state of the cue before it (docs/show-format.md). With
 // --follow, follows fire as they would on stage (cue N's follow may GO the next cue, and so on).
-// `--play LIST=CUE[@MASTER][+GO_S]` (repeated) plays several lists at once instead (app/list_plays.h).
+// `--play LIST=CUE[@MASTER][+GO_S]` (repeated) plays several lists at once instead (shows/frame/list_plays.h).
 // Bad arguments or a broken show give one line on stderr and exit 1 (2 for usage).
 #include <cmath>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
-#include "app/atmosphere_field.h"
+#include "shows/frame/atmosphere_field.h"
 #include "shows/hazer_levels.h"
 #include "renderer/scene/venue.h"
 #include "app/command_line.h"
 #include "app/commands.h"
-#include "app/list_plays.h"
-#include "app/state_json.h"
+#include "shows/frame/list_plays.h"
+#include "shows/frame/state_json.h"
 #include "shows/cue_player.h"
 #include "shows/movement.h"
 #include "shows/playback.h"

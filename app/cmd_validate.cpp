@@ -5,7 +5,7 @@
 // warning (the venue is read for that only). Bad arguments exit 2.
 #include <iostream>
 
-#include "app/atmosphere_field.h"
+#include "shows/frame/atmosphere_field.h"
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "renderer/scene/venue.h"

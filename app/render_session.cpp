@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "app/frame_builder.h"
+#include "shows/frame/frame_builder.h"
 #include "app/progress.h"
 #include "renderer/reference/reference.h"
 #include "renderer/scene/image.h"

@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "app/atmosphere_field.h"
+#include "shows/frame/atmosphere_field.h"
 #include "app/render_job.h"
 #include "fixtures/core/result.h"
 #include "renderer/context.h"

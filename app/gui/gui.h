@@ -28,7 +28,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>  // GetItemID: which widget an edit came from (undo merging)
 
-#include "app/atmosphere_field.h"
+#include "shows/frame/atmosphere_field.h"
 #include "app/gui/desktop_dialog.h"
 #include "shows/edit/show_document.h"
 #include "shows/movement.h"

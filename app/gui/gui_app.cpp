@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "app/frame_builder.h"
+#include "shows/frame/frame_builder.h"
 #include "app/command_line.h"
 #include "app/gui/gui.h"
 #include "shows/hazer_levels.h"

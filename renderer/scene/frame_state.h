@@ -80,7 +80,7 @@ struct FrameState {
   // Soft shadows (docs/physics.md, "Soft shadows"): V(x) is the fraction of each beam's lens
   // disc (BeamOptics::lensRadiusM) seen from x, an area light's penumbra; false: the point
   // test from the lens centre. Off here so that hand-built frames (tests) keep point lights;
-  // shows turn it on unless they ask for "shadows": "hard" (app/frame_builder.cpp).
+  // shows turn it on unless they ask for "shadows": "hard" (shows/frame/frame_builder.cpp).
   bool softShadows = false;
   // Visible dust in the beams (docs/rendering.md, "Particles"): a display option, drawn only
   // when particles.settings.enabled; off, the image is the radiometric one.

@@ -84,13 +84,13 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
   const std::string& verb = parts[1];
   if (parts.size() == 2 && (verb == "go" || verb == "back" || verb == "clear")) {
     if (argc != 0) return fail(r.address + " takes no arguments");
-    r.command.kind = verb == "go" ? OscCommand::Kind::Go : verb == "back" ? OscCommand::Kind::Back : OscCommand::Kind::ClearAll;
+    r.command.kind = verb == "go" ? RemoteCommand::Kind::Go : verb == "back" ? RemoteCommand::Kind::Back : RemoteCommand::Kind::ClearAll;
     r.ok = true;
     return r;
   }
   if (parts.size() == 2 && verb == "camera") {
     if (argc != 1 || (t[0] != 's' && t[0] != 'S')) return fail(r.address + " takes one argument, a camera name (a string)");
-    r.command.kind = OscCommand::Kind::Camera;
+    r.command.kind = RemoteCommand::Kind::Camera;
     r.command.camera = text(argv[0]);
     r.ok = true;
     return r;
@@ -109,7 +109,7 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
       if (cue.back() == '.') cue.pop_back();
     }
     if (!isCueNumber(cue)) return fail(r.address + ": '" + cue + "' is not a cue number; expected one like 3 or 1.5");
-    r.command.kind = OscCommand::Kind::Goto;
+    r.command.kind = RemoteCommand::Kind::Goto;
     r.command.cue = cue;
     r.ok = true;
     return r;
@@ -119,12 +119,12 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
     const std::string& what = parts[3];
     if (what == "go" || what == "back") {
       if (argc != 0) return fail(r.address + " takes no arguments");
-      r.command.kind = what == "go" ? OscCommand::Kind::ListGo : OscCommand::Kind::ListBack;
+      r.command.kind = what == "go" ? RemoteCommand::Kind::ListGo : RemoteCommand::Kind::ListBack;
     } else if (what == "master") {
       const auto v = argc == 1 ? number(t[0], argv[0]) : std::nullopt;
       if (!v || !std::isfinite(*v) || *v < 0 || *v > 1)
         return fail(r.address + " takes one number 0..1, the master level (got type tags '" + t + "')");
-      r.command.kind = OscCommand::Kind::ListMaster;
+      r.command.kind = RemoteCommand::Kind::ListMaster;
       r.command.level = *v;
     } else {
       return fail(r.address + ": unknown list command '" + what + "'; expected go, back or master");
@@ -151,7 +151,7 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
     if (attr == "clear") {
       good = argc == 0;
       expected = "no arguments";
-      r.command.kind = OscCommand::Kind::ClearFixture;
+      r.command.kind = RemoteCommand::Kind::ClearFixture;
     } else if (attr == "intensity") {
       good = one(0, 1, v.intensity), expected = "one number 0..1";
     } else if (attr == "iris") {
@@ -202,7 +202,7 @@ OscParse parseOscCommand(std::span<const uint8_t> d) {
                   "gobo2_spin, prism_spin, animation, animation_rotation, animation_spin, color, color2, cto or clear");
     }
     if (!good) return fail(r.address + " takes " + expected + " (got type tags '" + t + "')");
-    if (attr != "clear") r.command.kind = OscCommand::Kind::SetFixture;
+    if (attr != "clear") r.command.kind = RemoteCommand::Kind::SetFixture;
     r.ok = true;
     return r;
   }

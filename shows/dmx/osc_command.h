@@ -18,26 +18,15 @@
 #include <string>
 #include <vector>
 
-#include "shows/show.h"
+#include "shows/remote_command.h"
 
 namespace haze {
-
-struct OscCommand {
-  enum class Kind { Go, Back, Goto, SetFixture, ClearFixture, ClearAll, Camera, ListGo, ListBack, ListMaster };
-  Kind kind = Kind::Go;
-  std::string cue;      // Goto
-  std::string camera;   // Camera: the camera's name
-  std::string list;     // ListGo, ListBack, ListMaster: the cue list's name
-  double level = 1.0;   // ListMaster
-  int fixture = 0;      // SetFixture, ClearFixture
-  CueValues values;     // SetFixture: one attribute set
-};
 
 struct OscParse {
   bool ok = false;
   std::string address;  // the message's OSC address, when there was one
   std::string error;    // why it was refused: for the reply and the log
-  OscCommand command;
+  RemoteCommand command;
 };
 
 OscParse parseOscCommand(std::span<const uint8_t> datagram);

@@ -155,7 +155,7 @@ std::optional<int> pickFixtureBody(const Show& show, const ProfileSet& profiles,
     const Attributes a = st != state.end() ? st->second : Attributes{};
     boxes.clear();
     meshes.clear();
-    // Posed as the frame builder poses it for the renderer (app/frame_builder.cpp).
+    // Posed as the frame builder poses it for the renderer (shows/frame/frame_builder.cpp).
     poseBody(p->second->housing(), f.position, f.rotationDeg, a.panDeg, a.tiltDeg, boxes, &meshes);
     const BodyHit h = closestBody(boxes, meshes, bodyMeshAccels(meshes), ray.origin, ray.dir, nearestM);
     if (h.hit && h.tM < nearestM) {

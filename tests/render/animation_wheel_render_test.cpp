@@ -8,7 +8,7 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "app/frame_builder.h"
+#include "shows/frame/frame_builder.h"
 #include "app/render_session.h"
 #include "fixtures/animation_wheel.h"
 #include "fixtures/attributes.h"

@@ -11,7 +11,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/frame_builder.h"
+#include "shows/frame/frame_builder.h"
 #include "app/render_session.h"
 #include "fixtures/blades.h"
 #include "fixtures/cells.h"

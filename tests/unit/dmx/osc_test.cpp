@@ -45,12 +45,12 @@ std::vector<uint8_t> osc(const std::string& address, const std::vector<Arg>& arg
 }
 
 TEST(Osc, TransportCommands) {
-  EXPECT_EQ(parseOscCommand(osc("/haze/go")).command.kind, OscCommand::Kind::Go);
-  EXPECT_EQ(parseOscCommand(osc("/haze/back")).command.kind, OscCommand::Kind::Back);
-  EXPECT_EQ(parseOscCommand(osc("/haze/clear")).command.kind, OscCommand::Kind::ClearAll);
+  EXPECT_EQ(parseOscCommand(osc("/haze/go")).command.kind, RemoteCommand::Kind::Go);
+  EXPECT_EQ(parseOscCommand(osc("/haze/back")).command.kind, RemoteCommand::Kind::Back);
+  EXPECT_EQ(parseOscCommand(osc("/haze/clear")).command.kind, RemoteCommand::Kind::ClearAll);
   const OscParse cue = parseOscCommand(osc("/haze/cue", {{'s', 0, "1.5"}}));
   ASSERT_TRUE(cue.ok) << cue.error;
-  EXPECT_EQ(cue.command.kind, OscCommand::Kind::Goto);
+  EXPECT_EQ(cue.command.kind, RemoteCommand::Kind::Goto);
   EXPECT_EQ(cue.command.cue, "1.5");
   EXPECT_EQ(parseOscCommand(osc("/haze/goto", {{'i', 3}})).command.cue, "3");
   EXPECT_EQ(parseOscCommand(osc("/haze/cue", {{'f', 2.5}})).command.cue, "2.5");
@@ -60,7 +60,7 @@ TEST(Osc, TransportCommands) {
 TEST(Osc, Camera) {
   const OscParse cam = parseOscCommand(osc("/haze/camera", {{'s', 0, "Side"}}));
   ASSERT_TRUE(cam.ok) << cam.error;
-  EXPECT_EQ(cam.command.kind, OscCommand::Kind::Camera);
+  EXPECT_EQ(cam.command.kind, RemoteCommand::Kind::Camera);
   EXPECT_EQ(cam.command.camera, "Side");
   for (const auto& bad : {osc("/haze/camera"), osc("/haze/camera", {{'i', 2}}),
                           osc("/haze/camera", {{'s', 0, "a"}, {'s', 0, "b"}})}) {
@@ -73,12 +73,12 @@ TEST(Osc, Camera) {
 TEST(Osc, ListCommands) {
   const OscParse go = parseOscCommand(osc("/haze/list/Specials/go"));
   ASSERT_TRUE(go.ok) << go.error;
-  EXPECT_EQ(go.command.kind, OscCommand::Kind::ListGo);
+  EXPECT_EQ(go.command.kind, RemoteCommand::Kind::ListGo);
   EXPECT_EQ(go.command.list, "Specials");
-  EXPECT_EQ(parseOscCommand(osc("/haze/list/Main/back")).command.kind, OscCommand::Kind::ListBack);
+  EXPECT_EQ(parseOscCommand(osc("/haze/list/Main/back")).command.kind, RemoteCommand::Kind::ListBack);
   const OscParse m = parseOscCommand(osc("/haze/list/Specials/master", {{'f', 0.25}}));
   ASSERT_TRUE(m.ok) << m.error;
-  EXPECT_EQ(m.command.kind, OscCommand::Kind::ListMaster);
+  EXPECT_EQ(m.command.kind, RemoteCommand::Kind::ListMaster);
   EXPECT_DOUBLE_EQ(m.command.level, 0.25);
   EXPECT_DOUBLE_EQ(parseOscCommand(osc("/haze/list/A/master", {{'i', 1}})).command.level, 1.0);
 }
@@ -86,7 +86,7 @@ TEST(Osc, ListCommands) {
 TEST(Osc, FixtureAttributes) {
   const OscParse i = parseOscCommand(osc("/haze/fixture/12/intensity", {{'f', 0.5}}));
   ASSERT_TRUE(i.ok) << i.error;
-  EXPECT_EQ(i.command.kind, OscCommand::Kind::SetFixture);
+  EXPECT_EQ(i.command.kind, RemoteCommand::Kind::SetFixture);
   EXPECT_EQ(i.command.fixture, 12);
   EXPECT_FLOAT_EQ(*i.command.values.intensity, 0.5f);
   EXPECT_FALSE(i.command.values.panDeg);
@@ -97,7 +97,7 @@ TEST(Osc, FixtureAttributes) {
   EXPECT_FLOAT_EQ(c.command.values.color->g, 0.25f);
   const OscParse g = parseOscCommand(osc("/haze/fixture/1/gobo", {{'s', 0, "Stars"}}));
   EXPECT_EQ(*g.command.values.gobo, "Stars");
-  EXPECT_EQ(parseOscCommand(osc("/haze/fixture/1/clear")).command.kind, OscCommand::Kind::ClearFixture);
+  EXPECT_EQ(parseOscCommand(osc("/haze/fixture/1/clear")).command.kind, RemoteCommand::Kind::ClearFixture);
   // The lens's focus, 0..1 (docs/physics.md, "Focus").
   const OscParse f = parseOscCommand(osc("/haze/fixture/3/focus", {{'f', 0.25}}));
   ASSERT_TRUE(f.ok) << f.error;

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "shows/playbacks.h"
-#include "shows/dmx/osc_command.h"
+#include "shows/remote_command.h"
 #include "shows/timecode.h"
 
 namespace haze {
@@ -32,7 +32,7 @@ class LivePlayback {
   LivePlayback(const Show& show, const ProfileSet& profiles, const CueList* list);
 
   // An OSC command. The result says what happened ("cue 3") or why nothing did.
-  Result<std::string> apply(const OscCommand& command, double nowS);
+  Result<std::string> apply(const RemoteCommand& command, double nowS);
   // A timecode reading at fps frames per second; returns what it fired ("" when nothing).
   std::string timecode(const Timecode& time, double fps, double nowS);
 

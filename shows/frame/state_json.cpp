@@ -1,5 +1,5 @@
 // The stage state as JSON (see state_json.h).
-#include "app/state_json.h"
+#include "shows/frame/state_json.h"
 
 #include <optional>
 #include <string>

@@ -1,11 +1,11 @@
-#include "app/frame_builder.h"
+#include "shows/frame/frame_builder.h"
 
 #include <algorithm>
 #include <cstring>
 #include <functional>
 #include <vector>
 
-#include "app/cell_merge.h"
+#include "shows/frame/cell_merge.h"
 #include "renderer/scene/physics.h"
 
 namespace haze {

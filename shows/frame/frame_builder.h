@@ -30,7 +30,7 @@ struct FrameOptions {
   // The show clock the frame is built for (the playback time of --at, of a video frame, of the
   // GUI and live clocks): spinning wheels stand at rotation + spin * clockS (docs/physics.md, "Spin").
   double clockS = 0.0;
-  // The medium's density field at the frame's time (app/atmosphere_field.h); none: uniform.
+  // The medium's density field at the frame's time (shows/frame/atmosphere_field.h); none: uniform.
   std::shared_ptr<const DensityField> density;
   // Soft or hard shadows (--shadows); none: the show's atmosphere.shadows.
   std::optional<bool> softShadows;

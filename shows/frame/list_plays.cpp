@@ -1,6 +1,6 @@
 // --play: parse LIST=CUE[@MASTER][+GO_S], then play the lists on one Playbacks on a schedule of
 // GOs, sampled as `haze state --follow` samples one list.
-#include "app/list_plays.h"
+#include "shows/frame/list_plays.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // values (fades of 0, so no timing enters).
 #include <gtest/gtest.h>
 
-#include "shows/dmx/live_playback.h"
+#include "shows/frame/live_playback.h"
 #include "unit/dmx/test_show.h"
 
 namespace haze {
@@ -32,29 +32,29 @@ float intensity(LivePlayback& p, double now) { return p.stage(now, {}, {}).at(10
 TEST(LivePlayback, OscGoBackGoto) {
   const test::TestShow t = timedShow();
   LivePlayback p(t.show, t.profiles, &t.show.cueLists[0]);
-  OscCommand c;
-  c.kind = OscCommand::Kind::Back;
+  RemoteCommand c;
+  c.kind = RemoteCommand::Kind::Back;
   EXPECT_FALSE(p.apply(c, 0.0)) << "nothing before the first GO";
-  c.kind = OscCommand::Kind::Go;
+  c.kind = RemoteCommand::Kind::Go;
   EXPECT_EQ(*p.apply(c, 0.0), "cue 1");
   EXPECT_EQ(*p.apply(c, 0.1), "cue 2");
-  c.kind = OscCommand::Kind::Back;
+  c.kind = RemoteCommand::Kind::Back;
   EXPECT_EQ(*p.apply(c, 0.2), "cue 1");
   EXPECT_FLOAT_EQ(intensity(p, 0.3), 0.2f);
-  c.kind = OscCommand::Kind::Goto;
+  c.kind = RemoteCommand::Kind::Goto;
   c.cue = "3";
   EXPECT_EQ(*p.apply(c, 0.4), "cue 3");
   EXPECT_FLOAT_EQ(intensity(p, 0.5), 0.6f);
   c.cue = "9";
   EXPECT_FALSE(p.apply(c, 0.6));
-  c.kind = OscCommand::Kind::SetFixture;
+  c.kind = RemoteCommand::Kind::SetFixture;
   c.fixture = 102;
   c.values.panDeg = 45.0f;
   EXPECT_TRUE(p.apply(c, 0.7));
   EXPECT_FLOAT_EQ(p.stage(0.7, {}, {}).at(102).panDeg, 45.0f);
   c.fixture = 999;
   EXPECT_FALSE(p.apply(c, 0.7)) << "no such fixture";
-  c.kind = OscCommand::Kind::ClearAll;
+  c.kind = RemoteCommand::Kind::ClearAll;
   EXPECT_TRUE(p.apply(c, 0.8));
   EXPECT_FLOAT_EQ(p.stage(0.8, {}, {}).at(102).panDeg, 0.0f);
 }
@@ -66,8 +66,8 @@ TEST(LivePlayback, CameraMustBeOneOfTheShows) {
   t.show.cameras.push_back(CameraDef{.name = "Side"});
   LivePlayback p(t.show, t.profiles, &t.show.cueLists[0]);
   EXPECT_EQ(p.camera(), "") << "the command line's camera until a message chooses one";
-  OscCommand c;
-  c.kind = OscCommand::Kind::Camera;
+  RemoteCommand c;
+  c.kind = RemoteCommand::Kind::Camera;
   c.camera = "Side";
   EXPECT_EQ(*p.apply(c, 0.0), "camera \"Side\"");
   c.camera = "Balcony";
@@ -124,7 +124,7 @@ TEST(LivePlayback, TimecodeFiresCuesAtTheirFrameAndChasesOnJumps) {
 TEST(LivePlayback, DmxFixturesFollowTheConsole) {
   const test::TestShow t = timedShow();
   LivePlayback p(t.show, t.profiles, &t.show.cueLists[0]);
-  OscCommand go;
+  RemoteCommand go;
   ASSERT_TRUE(p.apply(go, 0.0));
   StageState dmx = defaultState(t.show);
   dmx[101].intensity = 0.9f;
@@ -142,21 +142,21 @@ TEST(LivePlayback, OscDrivesOtherListsByName) {
   specials.cues[1].values[102].panDeg = 30.0f;
   t.show.cueLists.push_back(specials);
   LivePlayback p(t.show, t.profiles, &t.show.cueLists[0]);
-  OscCommand c;
+  RemoteCommand c;
   EXPECT_EQ(*p.apply(c, 0.0), "cue 1");  // Main: 101 at 0.2
-  c.kind = OscCommand::Kind::ListGo;
+  c.kind = RemoteCommand::Kind::ListGo;
   c.list = "Specials";
   EXPECT_EQ(*p.apply(c, 0.1), "cue list \"Specials\": cue 1");
   EXPECT_FLOAT_EQ(intensity(p, 0.2), 0.5f);  // max(0.2, 0.5)
-  c.kind = OscCommand::Kind::ListMaster;
+  c.kind = RemoteCommand::Kind::ListMaster;
   c.level = 0.25;
   EXPECT_EQ(*p.apply(c, 0.3), "cue list \"Specials\": master 0.25");
   EXPECT_FLOAT_EQ(intensity(p, 0.3), 0.2f);  // max(0.2, 0.25 x 0.5)
-  c.kind = OscCommand::Kind::ListGo;
+  c.kind = RemoteCommand::Kind::ListGo;
   EXPECT_EQ(*p.apply(c, 0.4), "cue list \"Specials\": cue 2");
   EXPECT_FLOAT_EQ(p.stage(0.4, {}, {}).at(102).panDeg, 30.0f);
   EXPECT_FALSE(p.apply(c, 0.5)) << "no cue after 2";
-  c.kind = OscCommand::Kind::ListBack;
+  c.kind = RemoteCommand::Kind::ListBack;
   EXPECT_EQ(*p.apply(c, 0.6), "cue list \"Specials\": cue 1");
   EXPECT_EQ(p.currentCue(), std::optional<size_t>(0));  // the played list did not move
   c.list = "Nope";

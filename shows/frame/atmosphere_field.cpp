@@ -1,4 +1,4 @@
-#include "app/atmosphere_field.h"
+#include "shows/frame/atmosphere_field.h"
 
 #include <algorithm>
 #include <cstdio>

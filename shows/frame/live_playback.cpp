@@ -1,5 +1,5 @@
 // Live cue engine: OSC commands, timecode firing and chasing, DMX and programmer overlay.
-#include "shows/dmx/live_playback.h"
+#include "shows/frame/live_playback.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -46,8 +46,8 @@ LivePlayback::LivePlayback(const Show& show, const ProfileSet& profiles, const C
     if (auto t = parseTimecode(list_->cues[i].timecode)) timed_.push_back({*t, i});
 }
 
-Result<std::string> LivePlayback::apply(const OscCommand& c, double nowS) {
-  using K = OscCommand::Kind;
+Result<std::string> LivePlayback::apply(const RemoteCommand& c, double nowS) {
+  using K = RemoteCommand::Kind;
   if (c.kind == K::SetFixture || c.kind == K::ClearFixture) {
     if (std::none_of(show_.fixtures.begin(), show_.fixtures.end(), [&](const FixtureDef& f) { return f.id == c.fixture; }))
       return Error{"", "fixture " + std::to_string(c.fixture), "the show has no fixture with this id"};

@@ -1,12 +1,12 @@
 // Merging a fixture's cells (see cell_merge.h).
-#include "app/cell_merge.h"
+#include "shows/frame/cell_merge.h"
 
 #include <algorithm>
 #include <map>
 
 #include <glm/geometric.hpp>
 
-#include "app/frame_builder.h"
+#include "shows/frame/frame_builder.h"
 
 namespace haze {
 

@@ -1,6 +1,6 @@
 // Recording through the edit commands the GUI uses, so a cue recorded from a console is the
 // same as one recorded by hand.
-#include "app/live_record.h"
+#include "shows/frame/live_record.h"
 
 #include <algorithm>
 
