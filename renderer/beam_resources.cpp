@@ -232,184 +232,193 @@ float BeamResources::readShadow(int layer, float nearM, float farM, float cutoff
 BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& venue, const GpuBodies& bodies,
                                       const gl::Program& shadowProgram) {
   const auto start = std::chrono::steady_clock::now();
-  const bool budgeted = settings_.mapWorkBudgetMs > 0.0;
   ++updates_;
-  BeamUpdateStats stats;
+  UpdatePlan plan{.frame = &frame, .venue = &venue, .bodies = &bodies, .program = &shadowProgram,
+                  .budgeted = settings_.mapWorkBudgetMs > 0.0};
   softShadows_ = frame.softShadows;
-  const int n = static_cast<int>(frame.beams.size());
-  const size_t un = static_cast<size_t>(n);
-  ensureShadowCapacity(n);
-  stats.shadowMapSize = shadowSize_;
-  drawnLightLayers_.resize(un, -1);
-  drawnLightKeys_.resize(un, 0);
-  drawnLightFixtures_.resize(un, 0);
-  lightStaleSince_.resize(un, 0);
+  const size_t n = frame.beams.size();
+  ensureShadowCapacity(static_cast<int>(n));
+  plan.stats.shadowMapSize = shadowSize_;
+  drawnLightLayers_.resize(n, -1);
+  drawnLightKeys_.resize(n, 0);
+  drawnLightFixtures_.resize(n, 0);
+  lightStaleSince_.resize(n, 0);
 
-  // Light-map layers by content: kept where the content is still in use, else reused.
-  std::vector<uint64_t> keys(un);
-  std::unordered_map<uint64_t, int> layerOf;
-  for (size_t i = 0; i < un; ++i) {
-    keys[i] = lightKey(frame.beams[i]);
-    layerOf.emplace(keys[i], -1);
-  }
-  // Under a budget a beam whose light map changed may keep its old one (its fallback) for a
-  // while: the layers that hold those stay in use too.
-  std::unordered_map<uint64_t, int> held;  // fallback content -> its layer
-  const auto fallbackLayer = [&](size_t i) {
-    const int l = drawnLightLayers_[i];
-    if (l < 0 || l >= lightCapacity_ || drawnLightFixtures_[i] != frame.beams[i].fixtureId ||
-        lightKeys_[static_cast<size_t>(l)] != drawnLightKeys_[i] || drawnLightKeys_[i] == 0)
-      return -1;
-    return l;
+  assignLightLayers(plan);
+  planShadows(plan);
+  // The work without a budget, or where a beam has no usable old map, is done now; the rest
+  // waits its turn in the schedule.
+  std::vector<MapJob> deferred = doOrDefer(plan);
+  const auto elapsedMs = [&] {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   };
-  if (budgeted) {
+  schedule_.run(std::move(deferred), settings_.mapWorkBudgetMs, elapsedMs, [&](const MapJob& job) {
+    const size_t i = static_cast<size_t>(job.beam);
+    if (job.kind == MapKind::Shadow) {
+      drawNow(plan, job.beam);
+      return true;
+    }
+    if (plan.layerOf[plan.keys[i]] >= 0) return false;  // another beam with this content was baked already
+    bake(plan, i);
+    return true;
+  });
+  readUnread(plan);
+  writeGpuBeams(plan);
+  uploadBeams();
+  return plan.stats;
+}
+
+// Light-map layers by content: kept where the content is still in use, else reused. Under a
+// budget a beam whose light map changed may keep its old one (its fallback) for a while: the
+// layers that hold those stay in use too.
+void BeamResources::assignLightLayers(UpdatePlan& plan) {
+  const FrameState& frame = *plan.frame;
+  const size_t n = frame.beams.size();
+  plan.keys.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    plan.keys[i] = lightKey(frame.beams[i]);
+    plan.layerOf.emplace(plan.keys[i], -1);
+  }
+  std::unordered_map<uint64_t, int> held;  // fallback content -> its layer
+  if (plan.budgeted) {
     const std::unordered_set<uint64_t> baked(lightKeys_.begin(), lightKeys_.end());
-    for (size_t i = 0; i < un; ++i)
-      if (const int l = fallbackLayer(i); l >= 0 && !baked.contains(keys[i]) && !layerOf.contains(drawnLightKeys_[i]))
+    for (size_t i = 0; i < n; ++i)
+      if (const int l = fallbackLayer(frame, i);
+          l >= 0 && !baked.contains(plan.keys[i]) && !plan.layerOf.contains(drawnLightKeys_[i]))
         held.emplace(drawnLightKeys_[i], l);
   }
-  ensureLightCapacity(static_cast<int>(layerOf.size() + held.size()), budgeted);
-  std::vector<int> freeLayers;
+  ensureLightCapacity(static_cast<int>(plan.layerOf.size() + held.size()), plan.budgeted);
   for (int l = lightCapacity_ - 1; l >= 0; --l) {
     const uint64_t k = lightKeys_[static_cast<size_t>(l)];
-    auto it = layerOf.find(k);
-    if (it != layerOf.end() && it->second < 0) it->second = l;
-    else if (!held.contains(k)) freeLayers.push_back(l);
+    auto it = plan.layerOf.find(k);
+    if (it != plan.layerOf.end() && it->second < 0) it->second = l;
+    else if (!held.contains(k)) plan.freeLayers.push_back(l);
   }
-  std::vector<int> fallback(un, -1);
-  for (size_t i = 0; i < un; ++i)
-    if (budgeted && layerOf[keys[i]] < 0) {
-      const int l = fallbackLayer(i);
+  plan.fallback.assign(n, -1);
+  for (size_t i = 0; i < n; ++i)
+    if (plan.budgeted && plan.layerOf[plan.keys[i]] < 0) {
+      const int l = fallbackLayer(frame, i);
       const uint64_t k = l >= 0 ? lightKeys_[static_cast<size_t>(l)] : 0;
-      if (l >= 0 && (held.contains(k) || layerOf.contains(k))) fallback[i] = l;
+      if (l >= 0 && (held.contains(k) || plan.layerOf.contains(k))) plan.fallback[i] = l;
     }
+}
 
-  // What each beam's shadow map would be drawn with this frame.
+// The layer beam i was last drawn with, while it still holds what it held then for the same
+// fixture; -1 when there is none.
+int BeamResources::fallbackLayer(const FrameState& frame, size_t i) const {
+  const int l = drawnLightLayers_[i];
+  if (l < 0 || l >= lightCapacity_ || drawnLightFixtures_[i] != frame.beams[i].fixtureId ||
+      lightKeys_[static_cast<size_t>(l)] != drawnLightKeys_[i] || drawnLightKeys_[i] == 0)
+    return -1;
+  return l;
+}
+
+// What each beam's shadow map would be drawn with this frame.
+void BeamResources::planShadows(UpdatePlan& plan) {
+  const FrameState& frame = *plan.frame;
   const std::vector<BodyBound> boxBounds = bodyBounds(frame.bodies), meshBounds = bodyBounds(frame.bodyMeshes);
-  const int shadowed = std::min(n, shadowCapacity_);
-  struct ShadowJob {
-    float cutoff, farM;
-    glm::mat4 viewProj;
-    ShadowCasters casters;
-    uint64_t key;
-  };
-  std::vector<ShadowJob> shadowJobs(static_cast<size_t>(shadowed));
-  for (int i = 0; i < shadowed; ++i) {
-    const BeamState& b = frame.beams[static_cast<size_t>(i)];
-    ShadowJob& j = shadowJobs[static_cast<size_t>(i)];
+  plan.shadowJobs.resize(static_cast<size_t>(std::min(static_cast<int>(frame.beams.size()), shadowCapacity_)));
+  for (size_t i = 0; i < plan.shadowJobs.size(); ++i) {
+    const BeamState& b = frame.beams[i];
+    ShadowJob& j = plan.shadowJobs[i];
     j.cutoff = b.optics.cutoffHalfAngleRad();
-    j.farM = farthestCornerM(b.pose.lensPosition, venue) * 1.05f;
+    j.farM = farthestCornerM(b.pose.lensPosition, *plan.venue) * 1.05f;
     j.viewProj = shadowViewProjection(b, j.farM, j.cutoff);
     // The casters bounded against the cone (the frustum only adds its corners, where I_eff is 0).
     j.casters = shadowCasters(b, j.cutoff, boxBounds, meshBounds);
     j.key = mix(mix(mix(b.poseKey, std::hash<float>{}(j.cutoff)), 2), j.casters.key);
   }
+}
 
-  // The work: light maps to bake (one per content) and shadow maps to draw. Without a budget,
-  // or where a beam has no usable old map, it is done now; the rest waits its turn.
-  const int size = settings_.lightMapSize;
-  const auto bake = [&](size_t i) {
-    int& layer = layerOf[keys[i]];
-    if (layer >= 0 || freeLayers.empty()) return;
-    const BeamState& b = frame.beams[i];
-    layer = freeLayers.back();
-    freeLayers.pop_back();
-    const LightMap map = b.optics.bakeLightMap(size);
-    if (map.size == size && map.cd.size() == static_cast<size_t>(size) * size) {
-      glTextureSubImage3D(lightMaps_.id(), 0, 0, 0, layer, size, size, 1, GL_RED, GL_FLOAT, map.cd.data());
-      extents_[static_cast<size_t>(layer)] = map.extent;
-      coreCos2_[static_cast<size_t>(layer)] = coreCos2(map, b.optics.cutoffHalfAngleRad());
-    }
-    lightScales_[static_cast<size_t>(layer)] =
-        1.0f / (std::tan(glm::radians(b.optics.fieldAngleDeg) * 0.5f) * extents_[static_cast<size_t>(layer)]);
-    lightKeys_[static_cast<size_t>(layer)] = keys[i];
-    ++stats.lightMapsBaked;
-  };
-  // Without a budget the maps' readbacks (each waits for its map) come after a batch is drawn:
-  // the GL rasterises one map while the next is being set up, instead of idling through each
-  // readback. With a budget each job is read at once, so that its time counts against the budget.
-  std::vector<int> unread;
-  const auto readUnread = [&] {
-    for (int i : unread) {
-      const ShadowJob& j = shadowJobs[static_cast<size_t>(i)];
-      reachesM_[static_cast<size_t>(i)] = readShadow(i, kShadowNearM, j.farM, j.cutoff);
-    }
-    unread.clear();
-  };
-  const auto draw = [&](int i) {
-    const ShadowJob& j = shadowJobs[static_cast<size_t>(i)];
-    const size_t l = static_cast<size_t>(i);
-    drawShadow(i, j.viewProj, venue, bodies, j.casters, shadowProgram);
-    unread.push_back(i);
-    if (budgeted || unread.size() >= static_cast<size_t>(kShadowReadBatch)) readUnread();
-    shadowKeys_[l] = j.key;
-    shadowViewProjs_[l] = j.viewProj;
-    shadowFixtures_[l] = frame.beams[l].fixtureId;
-    ++stats.shadowMapsRendered;
-  };
-  struct Deferred {
-    uint64_t since;
-    int kind;  // 0: bake beam's light map, 1: draw its shadow map
-    int beam;
-  };
-  std::vector<Deferred> deferred;
-  for (int i = 0; i < n; ++i) {
-    const size_t l = static_cast<size_t>(i);
-    if (layerOf[keys[l]] < 0) {
-      if (fallback[l] < 0) {
-        bake(l);
+// Bakes and draws what must be done now; returns the jobs that may wait (under a budget, where
+// the beam has a usable old map to show meanwhile), each stale since the first update that
+// found it so.
+std::vector<MapJob> BeamResources::doOrDefer(UpdatePlan& plan) {
+  const FrameState& frame = *plan.frame;
+  std::vector<MapJob> deferred;
+  for (size_t l = 0; l < frame.beams.size(); ++l) {
+    const int i = static_cast<int>(l);
+    if (plan.layerOf[plan.keys[l]] < 0) {
+      if (plan.fallback[l] < 0) {
+        bake(plan, l);
       } else {
         if (lightStaleSince_[l] == 0) lightStaleSince_[l] = updates_;
-        deferred.push_back({lightStaleSince_[l], 0, i});
+        deferred.push_back({lightStaleSince_[l], i, MapKind::Light});
       }
     }
     // A beam with neither light map is not drawn (past the GL's layer limit): no shadow map either.
-    if (layerOf[keys[l]] < 0 && fallback[l] < 0) continue;
-    if (i >= shadowed || shadowKeys_[l] == shadowJobs[l].key) continue;
+    if (plan.layerOf[plan.keys[l]] < 0 && plan.fallback[l] < 0) continue;
+    if (l >= plan.shadowJobs.size() || shadowKeys_[l] == plan.shadowJobs[l].key) continue;
     const bool usable = shadowKeys_[l] != 0 && shadowFixtures_[l] == frame.beams[l].fixtureId;
-    if (!budgeted || !usable) {
-      draw(i);
+    if (!plan.budgeted || !usable) {
+      drawNow(plan, i);
     } else {
-      // Stale since the first update that found it so (kept while it keeps moving).
       if (shadowStaleSince_[l] == 0) shadowStaleSince_[l] = updates_;
-      deferred.push_back({shadowStaleSince_[l], 1, i});
+      deferred.push_back({shadowStaleSince_[l], i, MapKind::Shadow});
     }
   }
-  std::sort(deferred.begin(), deferred.end(), [](const Deferred& a, const Deferred& b) {
-    return std::tie(a.since, a.beam, a.kind) < std::tie(b.since, b.beam, b.kind);
-  });
-  // The oldest always goes (every frame progresses); the others while they are expected to end
-  // within the budget (each kind's last time: one map more would overrun it by a whole map).
-  bool first = true;
-  for (const Deferred& d : deferred) {
-    const auto now = std::chrono::steady_clock::now();
-    const double spentMs = std::chrono::duration<double, std::milli>(now - start).count();
-    if (!first && spentMs + lastMapMs_[d.kind] > settings_.mapWorkBudgetMs) break;
-    const size_t l = static_cast<size_t>(d.beam);
-    if (d.kind == 0) {
-      if (layerOf[keys[l]] >= 0) continue;  // another beam with this content was baked already
-      bake(l);
-    } else {
-      draw(d.beam);
-    }
-    lastMapMs_[d.kind] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - now).count();
-    first = false;
+  return deferred;
+}
+
+void BeamResources::bake(UpdatePlan& plan, size_t i) {
+  int& layer = plan.layerOf[plan.keys[i]];
+  if (layer >= 0 || plan.freeLayers.empty()) return;
+  const BeamState& b = plan.frame->beams[i];
+  layer = plan.freeLayers.back();
+  plan.freeLayers.pop_back();
+  const size_t ll = static_cast<size_t>(layer);
+  const int size = settings_.lightMapSize;
+  const LightMap map = b.optics.bakeLightMap(size);
+  if (map.size == size && map.cd.size() == static_cast<size_t>(size) * size) {
+    glTextureSubImage3D(lightMaps_.id(), 0, 0, 0, layer, size, size, 1, GL_RED, GL_FLOAT, map.cd.data());
+    extents_[ll] = map.extent;
+    coreCos2_[ll] = coreCos2(map, b.optics.cutoffHalfAngleRad());
   }
+  lightScales_[ll] = 1.0f / (std::tan(glm::radians(b.optics.fieldAngleDeg) * 0.5f) * extents_[ll]);
+  lightKeys_[ll] = plan.keys[i];
+  ++plan.stats.lightMapsBaked;
+}
 
-  readUnread();
+// Without a budget the maps' readbacks (each waits for its map) come after a batch is drawn: the
+// GL rasterises one map while the next is being set up, instead of idling through each readback.
+// With a budget each map is read at once, so that its time counts against the budget.
+void BeamResources::drawNow(UpdatePlan& plan, int i) {
+  const size_t l = static_cast<size_t>(i);
+  const ShadowJob& j = plan.shadowJobs[l];
+  drawShadow(i, j.viewProj, *plan.venue, *plan.bodies, j.casters, *plan.program);
+  plan.unread.push_back(i);
+  if (plan.budgeted || plan.unread.size() >= static_cast<size_t>(kShadowReadBatch)) readUnread(plan);
+  shadowKeys_[l] = j.key;
+  shadowViewProjs_[l] = j.viewProj;
+  shadowFixtures_[l] = plan.frame->beams[l].fixtureId;
+  ++plan.stats.shadowMapsRendered;
+}
 
-  drawn_.assign(un, 0);
-  gpuBeams_.resize(un);
-  for (int i = 0; i < n; ++i) {
-    const size_t l = static_cast<size_t>(i);
+void BeamResources::readUnread(UpdatePlan& plan) {
+  for (int i : plan.unread) {
+    const ShadowJob& j = plan.shadowJobs[static_cast<size_t>(i)];
+    reachesM_[static_cast<size_t>(i)] = readShadow(i, kShadowNearM, j.farM, j.cutoff);
+  }
+  plan.unread.clear();
+}
+
+// The storage buffer's entries: each beam with the maps it has this frame (an old light map
+// keeps the scale it was baked for, an old shadow map the matrix it was drawn with, so lookups
+// read the texels they index), or dark past the GL's layer limit.
+void BeamResources::writeGpuBeams(UpdatePlan& plan) {
+  const FrameState& frame = *plan.frame;
+  const size_t n = frame.beams.size();
+  drawn_.assign(n, 0);
+  gpuBeams_.resize(n);
+  for (size_t l = 0; l < n; ++l) {
     const BeamState& b = frame.beams[l];
     GpuBeam& g = gpuBeams_[l];
-    const int current = layerOf[keys[l]];
-    const int layer = current >= 0 ? current : fallback[l];
-    if (layer < 0 || i >= shadowCapacity_) {  // past the GL's layer limit: a dark, disc-less beam
+    const int current = plan.layerOf[plan.keys[l]];
+    const int layer = current >= 0 ? current : plan.fallback[l];
+    if (layer < 0 || l >= static_cast<size_t>(shadowCapacity_)) {
       g = GpuBeam{};
       g.lensPos = glm::vec4(b.pose.lensPosition, 2.0f);  // cos(cutoff) > 1: no direction is inside
-      stats.notDrawn.push_back(b.fixtureId);
+      plan.stats.notDrawn.push_back(b.fixtureId);
       drawnLightLayers_[l] = -1;
       continue;
     }
@@ -418,33 +427,34 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
     drawnLightLayers_[l] = layer;
     drawnLightKeys_[l] = lightKeys_[ll];
     drawnLightFixtures_[l] = b.fixtureId;
-    const ShadowJob& j = shadowJobs[l];
+    const ShadowJob& j = plan.shadowJobs[l];
     const bool shadowCurrent = shadowKeys_[l] == j.key;
     if (shadowCurrent) shadowStaleSince_[l] = 0;
     if (current >= 0) lightStaleSince_[l] = 0;
-    stats.mapsPending += !shadowCurrent || current < 0;
-    const float cutoff = j.cutoff;
+    plan.stats.mapsPending += !shadowCurrent || current < 0;
     const float tanHalfF = std::tan(glm::radians(b.optics.fieldAngleDeg) * 0.5f);
-    g.lensPos = glm::vec4(b.pose.lensPosition, std::cos(cutoff));
-    // An old light map keeps the scale it was baked for, an old shadow map the matrix it was
-    // drawn with: lookups read the texels they index.
+    g.lensPos = glm::vec4(b.pose.lensPosition, std::cos(j.cutoff));
     g.xb = glm::vec4(b.pose.xb, current >= 0 ? 1.0f / (tanHalfF * extents_[ll]) : lightScales_[ll]);
     g.yb = glm::vec4(b.pose.yb, static_cast<float>(layer));
-    g.zb = glm::vec4(b.pose.zb, static_cast<float>(i));
-    g.color = glm::vec4(b.optics.color * b.optics.dimmer, std::tan(cutoff));
+    g.zb = glm::vec4(b.pose.zb, static_cast<float>(l));
+    g.color = glm::vec4(b.optics.color * b.optics.dimmer, std::tan(j.cutoff));
     g.shadowViewProj = shadowCurrent ? j.viewProj : shadowViewProjs_[l];
     // A radius of 0 draws no disc (a degenerate quad): tests use it to see the in-scattering alone.
     const float rl = std::max(b.optics.lensRadiusM, 0.0f);
     g.lens = glm::vec4(rl, rl > 0.0f ? 1.0f / (3.14159265f * rl * rl) : 0.0f, coreCos2_[ll],
                        1.0f / std::max(reachesM_[l], 1e-3f));
   }
-  stats.lightMapLayers = static_cast<int>(layerOf.size());
-  if (!stats.notDrawn.empty()) {
-    stats.notDrawnReason = shadowCapacity_ == 0 || lightCapacity_ == 0
-                               ? "the GL driver could not allocate the shadow or light maps"
-                               : "the GL driver's limit of " + std::to_string(maxLayers_) +
-                                     " texture array layers (one shadow map per beam)";
+  plan.stats.lightMapLayers = static_cast<int>(plan.layerOf.size());
+  if (!plan.stats.notDrawn.empty()) {
+    plan.stats.notDrawnReason = shadowCapacity_ == 0 || lightCapacity_ == 0
+                                    ? "the GL driver could not allocate the shadow or light maps"
+                                    : "the GL driver's limit of " + std::to_string(maxLayers_) +
+                                          " texture array layers (one shadow map per beam)";
   }
+}
+
+void BeamResources::uploadBeams() {
+  const int n = static_cast<int>(gpuBeams_.size());
   if (n > ssboCapacity_) {
     ssboCapacity_ = std::max(n, 2 * ssboCapacity_);
     ssbo_ = gl::Buffer("beams");
@@ -453,7 +463,6 @@ BeamUpdateStats BeamResources::update(const FrameState& frame, const GpuVenue& v
   }
   if (n > 0)
     glNamedBufferSubData(ssbo_.id(), 0, static_cast<GLsizeiptr>(sizeof(GpuBeam) * n), gpuBeams_.data());
-  return stats;
 }
 
 void BeamResources::bind() const {

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -28,6 +29,7 @@
 #include "renderer/gpu_venue.h"
 #include "renderer/scene/body_shadow.h"
 #include "renderer/scene/frame_state.h"
+#include "renderer/scene/map_schedule.h"
 #include "shaders/interface.h"
 
 namespace haze {
@@ -98,6 +100,38 @@ class BeamResources {
   // beam's reach (see reachM).
   float readShadow(int layer, float nearM, float farM, float cutoffRad);
 
+  // What one shadow map is drawn with.
+  struct ShadowJob {
+    float cutoff = 0.0f, farM = 0.0f;
+    glm::mat4 viewProj{1.0f};
+    ShadowCasters casters;
+    uint64_t key = 0;
+  };
+  // One update's plan and the work it has done so far.
+  struct UpdatePlan {
+    const FrameState* frame;
+    const GpuVenue* venue;
+    const GpuBodies* bodies;
+    const gl::Program* program;
+    bool budgeted = false;
+    std::vector<uint64_t> keys;                  // per beam: its light map's content
+    std::unordered_map<uint64_t, int> layerOf;   // content -> its layer (-1: not baked yet)
+    std::vector<int> freeLayers;
+    std::vector<int> fallback;                   // per beam: an old layer it shows meanwhile, or -1
+    std::vector<ShadowJob> shadowJobs;           // per beam within the shadow capacity
+    std::vector<int> unread;                     // beams whose drawn shadow map is not read back yet
+    BeamUpdateStats stats;
+  };
+  void assignLightLayers(UpdatePlan& plan);
+  int fallbackLayer(const FrameState& frame, size_t beam) const;
+  void planShadows(UpdatePlan& plan);
+  std::vector<MapJob> doOrDefer(UpdatePlan& plan);
+  void bake(UpdatePlan& plan, size_t beam);
+  void drawNow(UpdatePlan& plan, int beam);
+  void readUnread(UpdatePlan& plan);
+  void writeGpuBeams(UpdatePlan& plan);
+  void uploadBeams();
+
   BeamResourceSettings settings_;
   int maxLayers_ = 0;        // GL_MAX_ARRAY_TEXTURE_LAYERS
   int shadowCapacity_ = 0, shadowSize_ = 0, lightCapacity_ = 0, ssboCapacity_ = 0;
@@ -126,7 +160,7 @@ class BeamResources {
   std::vector<uint64_t> drawnLightKeys_;
   std::vector<int> drawnLightFixtures_;
   uint64_t updates_ = 0;
-  double lastMapMs_[2] = {0.0, 0.0};  // the last deferred light-map bake's and shadow map's times
+  MapSchedule schedule_;                // the deferred maps' order and budget
   std::vector<char> drawn_;            // per beam
   std::vector<float> coreCos2_;        // per light-map layer: the map's core (beam_resources.cpp)
   std::vector<float> depthScratch_;
