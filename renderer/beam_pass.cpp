@@ -1,3 +1,4 @@
+#include "renderer/gl/scope.h"
 #include "renderer/beam_pass.h"
 
 #include <algorithm>
@@ -110,8 +111,10 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
   const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
   glBindTextureUnit(HAZE_UNIT_SCENE_DEPTH, sceneDepth);
   glBindVertexArray(vao_.id());
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
+  // The passes below switch blending and the stencil test as they go; these put back at the end
+  // what the caller had.
+  gl::Capability depthTest(GL_DEPTH_TEST, false), twoSided(GL_CULL_FACE, false), blend(GL_BLEND, false),
+      stencil(GL_STENCIL_TEST, false);
 
   if (settings_.scatterDivisor > 1) {  // the scene depth at each low-resolution texel
     glBindFramebuffer(GL_FRAMEBUFFER, lowDepthFbo_.id());
@@ -205,7 +208,6 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
     glBindTextureUnit(HAZE_UNIT_REFINE_MASK, mask_.id());
   }
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glDisable(GL_BLEND);
   return fragments;
 }
 

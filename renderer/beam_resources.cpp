@@ -1,3 +1,4 @@
+#include "renderer/gl/scope.h"
 #include "renderer/beam_resources.h"
 
 #include <algorithm>
@@ -194,15 +195,13 @@ void BeamResources::drawShadow(int layer, const glm::mat4& viewProj, const GpuVe
   glClearNamedFramebufferfv(shadowFbo_.id(), GL_DEPTH, 0, &one);
   glUseProgram(program.id());
   glProgramUniformMatrix4fv(program.id(), HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
-  glEnable(GL_DEPTH_TEST);
+  // Surfaces are two-sided (docs/physics.md); a slope-scaled offset keeps lit surfaces from
+  // shadowing themselves at grazing angles.
+  gl::Capability depthTest(GL_DEPTH_TEST, true), twoSided(GL_CULL_FACE, false), offset(GL_POLYGON_OFFSET_FILL, true);
   glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);  // surfaces are two-sided (docs/physics.md)
-  // Slope-scaled offset keeps lit surfaces from shadowing themselves at grazing angles.
-  glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, 2.0f);
   venue.drawInside(viewProj);
   bodies.drawCasters(program.id(), casters.boxes, casters.meshes);
-  glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 float BeamResources::readShadow(int layer, float nearM, float farM, float cutoffRad) {

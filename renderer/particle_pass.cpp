@@ -1,3 +1,4 @@
+#include "renderer/gl/scope.h"
 #include "renderer/particle_pass.h"
 
 #include <algorithm>
@@ -91,17 +92,13 @@ ParticleStats ParticlePass::render(const FrameState& frame, const BeamResources&
   beams.bind();
   glBindTextureUnit(HAZE_UNIT_PARTICLES, texture_.id());
 
-  glEnable(GL_DEPTH_TEST);
+  // Tested against the scene's depth, not written: the dust adds light over it.
+  gl::Capability depthTest(GL_DEPTH_TEST, true), blend(GL_BLEND, true), pointSize(GL_PROGRAM_POINT_SIZE, true);
+  gl::DepthMask noWrites(false);
   glDepthFunc(GL_LESS);
-  glDepthMask(GL_FALSE);
-  glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
-  glEnable(GL_PROGRAM_POINT_SIZE);
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(set.particles.size()));
-  glDisable(GL_PROGRAM_POINT_SIZE);
-  glDisable(GL_BLEND);
-  glDepthMask(GL_TRUE);
   return stats;
 }
 

@@ -13,6 +13,7 @@
 #include "renderer/camera_uniforms.h"
 #include "renderer/beam_resources.h"
 #include "renderer/density_resources.h"
+#include "renderer/gl/scope.h"
 #include "renderer/gl/program.h"
 #include "renderer/gpu_bodies.h"
 #include "renderer/gpu_venue.h"
@@ -85,6 +86,21 @@ struct Renderer::Impl {
 
   // (Re)makes the targets whose size is the image's; nothing else depends on it.
   Status allocateTargets(int w, int h);
+
+  // The passes of a frame, in order (Renderer::render).
+  struct View {
+    int width = 0, height = 0;
+    float aspect = 1.0f, sigmaT = 0.0f;
+    glm::mat4 viewProj{1.0f};
+  };
+  View view(const FrameState& frame, const RenderSettings& settings) const;
+  void updateMaps(const FrameState& frame, PassTimes& times, std::vector<std::string>& warnings);
+  void clearScene(const FrameState& frame, const View& v);
+  void drawSurfaceAttributes(const FrameState& frame, const View& v, bool cullBodies, PassTimes& times);
+  void lightSurfaces(const FrameState& frame, const View& v, bool tiledSurfaces);
+  void drawLenses(const FrameState& frame, const View& v);
+  void drawParticles(const FrameState& frame, const View& v, PassTimes& times, std::vector<std::string>& warnings);
+  void collectTimes(const FrameState& frame, const RenderSettings& settings, PassTimes& times);
 };
 
 Status Renderer::Impl::allocateTargets(int w, int h) {
@@ -195,165 +211,193 @@ void Renderer::setMapWorkBudgetMs(double ms) {
 void Renderer::render(const FrameState& frame, bool accumulate) {
   Impl& m = *impl_;
   times_ = {};
-  const bool timing = settings_.timePasses;
-  // Timer queries rather than glFinish: nothing waits for the GL until the results are read
-  // at the end, and not at all unless timing was asked for.
-  auto begin = [&](int pass) {
-    if (timing) glBeginQuery(GL_TIME_ELAPSED, m.timers[pass].id());
-  };
-  auto end = [&] {
-    if (timing) glEndQuery(GL_TIME_ELAPSED);
-  };
-  begin(0);
-  // Bodies first: the beams' shadow maps draw other fixtures' bodies.
-  m.bodies.update(frame.bodies, frame.bodyMeshes);
-  BeamUpdateStats stats = m.beams.update(frame, m.venue, m.bodies, m.shadowProgram);
-  times_.sunMapRendered = m.sun.update(frame, m.venue, m.shadowProgram);
-  end();
-  times_.shadowMapsRendered = stats.shadowMapsRendered;
-  times_.mapsPending = stats.mapsPending;
-  times_.lightMapsBaked = stats.lightMapsBaked;
-  times_.shadowMapSize = stats.shadowMapSize;
-  times_.lightMapLayers = stats.lightMapLayers;
   warnings_.clear();
+  // Timer queries rather than glFinish: nothing waits for the GL until the results are read at
+  // the end, and not at all unless timing was asked for.
+  const auto timer = [&](int pass) { return settings_.timePasses ? m.timers[pass].id() : 0u; };
+  const Impl::View view = m.view(frame, settings_);
+  {
+    gl::PassScope pass("shadow and light maps", timer(0));
+    m.updateMaps(frame, times_, warnings_);
+  }
+  {
+    gl::PassScope pass("surfaces", timer(1));
+    m.density.update(frame, view.aspect, m.beams);
+    m.clearScene(frame, view);
+    m.drawSurfaceAttributes(frame, view, settings_.cullBodies, times_);
+    m.lightSurfaces(frame, view, settings_.tiledSurfaces);
+    m.drawLenses(frame, view);
+  }
+  {
+    gl::PassScope pass("beams", timer(2));
+    times_.planeFragments =
+        m.beamPass.render(frame, m.beams, m.density, m.depth.id(), m.radianceOnlyFbo.id(), accumulate, &m.sun);
+  }
+  // Visible dust (docs/rendering.md, "Particles"): a display option added after the
+  // radiometric composite, so with it off the image is exactly the radiometric one.
+  if (frame.particles.settings.enabled) {
+    gl::PassScope pass("particles", timer(3));
+    m.drawParticles(frame, view, times_, warnings_);
+  }
+  m.collectTimes(frame, settings_, times_);
+}
+
+Renderer::Impl::View Renderer::Impl::view(const FrameState& frame, const RenderSettings& settings) const {
+  View v{.width = settings.width, .height = settings.height};
+  v.aspect = static_cast<float>(v.width) / static_cast<float>(v.height);
+  v.viewProj = cameraViewProjection(frame.camera, v.aspect);
+  v.sigmaT = frame.medium.extinction();
+  return v;
+}
+
+// Bodies first: the beams' shadow maps draw other fixtures' bodies.
+void Renderer::Impl::updateMaps(const FrameState& frame, PassTimes& times, std::vector<std::string>& warnings) {
+  bodies.update(frame.bodies, frame.bodyMeshes);
+  BeamUpdateStats stats = beams.update(frame, venue, bodies, shadowProgram);
+  times.sunMapRendered = sun.update(frame, venue, shadowProgram);
+  times.shadowMapsRendered = stats.shadowMapsRendered;
+  times.mapsPending = stats.mapsPending;
+  times.lightMapsBaked = stats.lightMapsBaked;
+  times.shadowMapSize = stats.shadowMapSize;
+  times.lightMapLayers = stats.lightMapLayers;
   if (!stats.notDrawn.empty())
-    warnings_.push_back(fixtureList(std::move(stats.notDrawn)) + " not drawn (" +
-                        std::to_string(frame.beams.size() - static_cast<size_t>(m.beams.drawnCount())) + " of " +
-                        std::to_string(frame.beams.size()) + " beams): " + stats.notDrawnReason);
+    warnings.push_back(fixtureList(std::move(stats.notDrawn)) + " not drawn (" +
+                       std::to_string(frame.beams.size() - static_cast<size_t>(beams.drawnCount())) + " of " +
+                       std::to_string(frame.beams.size()) + " beams): " + stats.notDrawnReason);
+}
 
-  begin(1);
-  const int w = settings_.width, h = settings_.height;
-  const MediumState& med = frame.medium;
-  const float sigmaT = med.extinction();
-  m.density.update(frame, static_cast<float>(w) / static_cast<float>(h), m.beams);
-  glBindFramebuffer(GL_FRAMEBUFFER, m.sceneFbo.id());
-  glViewport(0, 0, w, h);
-  // Where no surface is hit the ray ends at the camera's far distance (docs/physics.md); through
-  // a density field, attenuated by its path along the view axis (docs/rendering.md, "Density").
-  const float backgroundPath = m.density.on() ? m.density.backgroundPath() : frame.camera.farM;
-  const glm::vec4 background(med.background * std::exp(-sigmaT * backgroundPath), 1.0f);
-  glClearNamedFramebufferfv(m.sceneFbo.id(), GL_COLOR, 0, glm::value_ptr(background));
+// Where no surface is hit the ray ends at the camera's far distance (docs/physics.md); through a
+// density field, attenuated by its path along the view axis (docs/rendering.md, "Density").
+void Renderer::Impl::clearScene(const FrameState& frame, const View& v) {
+  glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo.id());
+  glViewport(0, 0, v.width, v.height);
+  const float backgroundPath = density.on() ? density.backgroundPath() : frame.camera.farM;
+  const glm::vec4 background(frame.medium.background * std::exp(-v.sigmaT * backgroundPath), 1.0f);
+  glClearNamedFramebufferfv(sceneFbo.id(), GL_COLOR, 0, glm::value_ptr(background));
   const float one = 1.0f;
-  glDepthMask(GL_TRUE);  // a depth clear honours the mask, which other passes leave off
-  glClearNamedFramebufferfv(m.sceneFbo.id(), GL_DEPTH, 0, &one);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
+  gl::DepthMask write(true);  // a depth clear honours the mask
+  glClearNamedFramebufferfv(sceneFbo.id(), GL_DEPTH, 0, &one);
+}
 
-  // The surfaces' attributes first (depth-tested), then the lighting once per pixel over them.
-  const glm::mat4 viewProj = cameraViewProjection(frame.camera, static_cast<float>(w) / static_cast<float>(h));
-  glBindFramebuffer(GL_FRAMEBUFFER, m.gbufferFbo.id());
-  const GLuint gprog = m.gbufferProgram.id();
+// The surfaces' attributes, depth-tested, into the G-buffer: the venue, then the fixtures' bodies.
+void Renderer::Impl::drawSurfaceAttributes(const FrameState& frame, const View& v, bool cullBodies, PassTimes& times) {
+  gl::PassScope pass("surface attributes");
+  gl::Capability depthTest(GL_DEPTH_TEST, true), twoSided(GL_CULL_FACE, false), blend(GL_BLEND, false);
+  gl::DepthMask write(true);
+  glDepthFunc(GL_LESS);
+  glBindFramebuffer(GL_FRAMEBUFFER, gbufferFbo.id());
+  const GLuint gprog = gbufferProgram.id();
   glUseProgram(gprog);
-  glProgramUniformMatrix4fv(gprog, HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
-  m.venue.bind();
-  for (const GpuVenue::Draw& d : m.venue.draws()) {
-    const GpuVenue::GpuMaterial& mat = m.venue.materials()[static_cast<size_t>(d.material)];
+  glProgramUniformMatrix4fv(gprog, HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(v.viewProj));
+  venue.bind();
+  for (const GpuVenue::Draw& d : venue.draws()) {
+    const GpuVenue::GpuMaterial& mat = venue.materials()[static_cast<size_t>(d.material)];
     glProgramUniform4fv(gprog, HAZE_LOC_SURFACE_BASE_COLOR, 1, glm::value_ptr(mat.baseColor));
     glProgramUniform3fv(gprog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(mat.emissive));
     glProgramUniform1i(gprog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, mat.baseColorTexture >= 0);
     glProgramUniform1i(gprog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, mat.emissiveTexture >= 0);
-    if (mat.baseColorTexture >= 0)
-      glBindTextureUnit(HAZE_UNIT_BASE_TEXTURE, m.venue.texture(mat.baseColorTexture).id());
+    if (mat.baseColorTexture >= 0) glBindTextureUnit(HAZE_UNIT_BASE_TEXTURE, venue.texture(mat.baseColorTexture).id());
     if (mat.emissiveTexture >= 0)
-      glBindTextureUnit(HAZE_UNIT_EMISSIVE_TEXTURE, m.venue.texture(mat.emissiveTexture).id());
-    m.venue.draw(d);
+      glBindTextureUnit(HAZE_UNIT_EMISSIVE_TEXTURE, venue.texture(mat.emissiveTexture).id());
+    venue.draw(d);
   }
-  const GpuBodies::Camera bodyCamera{viewProj, frame.camera.position};
-  const GpuBodies::Camera* cull = settings_.cullBodies ? &bodyCamera : nullptr;
-  if (!m.bodies.empty() || m.bodies.hasMeshes()) {
+  const GpuBodies::Camera bodyCamera{v.viewProj, frame.camera.position};
+  const GpuBodies::Camera* cull = cullBodies ? &bodyCamera : nullptr;
+  if (!bodies.empty() || bodies.hasMeshes()) {
     const glm::vec3 black(0.0f);
     glProgramUniform1i(gprog, HAZE_LOC_SURFACE_HAS_BASE_TEXTURE, 0);
     glProgramUniform1i(gprog, HAZE_LOC_SURFACE_HAS_EMISSIVE_TEXTURE, 0);
     glProgramUniform3fv(gprog, HAZE_LOC_SURFACE_EMISSIVE, 1, glm::value_ptr(black));
   }
-  if (!m.bodies.empty()) {
-    m.bodies.bind();
-    for (const GpuBodies::Draw& d : m.bodies.draws()) {
+  if (!bodies.empty()) {
+    bodies.bind();
+    for (const GpuBodies::Draw& d : bodies.draws()) {
       const glm::vec4 albedo(d.albedo, 1.0f);
       glProgramUniform4fv(gprog, HAZE_LOC_SURFACE_BASE_COLOR, 1, glm::value_ptr(albedo));
-      m.bodies.draw(d);
+      bodies.draw(d);
     }
   }
-  if (m.bodies.hasMeshes()) m.bodies.drawMeshes(gprog, HAZE_LOC_SURFACE_BASE_COLOR, cull);
-  times_.bodyMeshesDrawn = cull ? m.bodies.meshesDrawn() : static_cast<int>(frame.bodyMeshes.size());
+  if (bodies.hasMeshes()) bodies.drawMeshes(gprog, HAZE_LOC_SURFACE_BASE_COLOR, cull);
+  times.bodyMeshesDrawn = cull ? bodies.meshesDrawn() : static_cast<int>(frame.bodyMeshes.size());
+}
 
-  m.beams.bind();
-  const bool tiled = settings_.tiledSurfaces && m.beams.count() > 0;
+// The lighting once per pixel over the G-buffer (a full-screen triangle), each pixel's beams
+// from its screen tile's list when the surfaces are tiled.
+void Renderer::Impl::lightSurfaces(const FrameState& frame, const View& v, bool tiledSurfaces) {
+  gl::PassScope pass("surface lighting");
+  gl::Capability depthTest(GL_DEPTH_TEST, false), blend(GL_BLEND, false);
+  beams.bind();
+  const bool tiled = tiledSurfaces && beams.count() > 0;
   if (tiled) {
-    glBindTextureUnit(HAZE_UNIT_SCENE_DEPTH, m.depth.id());
-    m.tiles.update(frame.camera, m.beams.count());
-    m.tiles.bind();
+    glBindTextureUnit(HAZE_UNIT_SCENE_DEPTH, depth.id());
+    tiles.update(frame.camera, beams.count());
+    tiles.bind();
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, m.radianceOnlyFbo.id());
-  glDisable(GL_DEPTH_TEST);
-  const GLuint prog = m.surfaceProgram.id();
+  glBindFramebuffer(GL_FRAMEBUFFER, radianceOnlyFbo.id());
+  const GLuint prog = surfaceProgram.id();
   glUseProgram(prog);
-  setCameraUniforms(prog, frame.camera, static_cast<float>(w) / static_cast<float>(h));
-  glProgramUniform1f(prog, HAZE_LOC_SURFACE_SIGMA_T, sigmaT);
-  glProgramUniform3fv(prog, HAZE_LOC_SURFACE_AMBIENT, 1, glm::value_ptr(med.ambient));
-  glProgramUniform1i(prog, HAZE_LOC_SURFACE_BEAM_COUNT, m.beams.count());
-  glProgramUniform1i(prog, HAZE_LOC_SURFACE_TILE_COLUMNS, tiled ? m.tiles.columns() : 0);
-  glProgramUniform1i(prog, HAZE_LOC_SURFACE_MASK_WORDS, m.tiles.maskWords());
-  m.beams.bindSoftShadows(prog);
-  m.density.bind(prog);
-  m.sun.bind(prog);
-  glBindTextureUnit(HAZE_UNIT_GBUFFER, m.gbuffer.id());
-  glBindTextureUnit(HAZE_UNIT_SCENE_DEPTH, m.depth.id());
-  glBindVertexArray(m.emptyVao.id());
+  setCameraUniforms(prog, frame.camera, v.aspect);
+  glProgramUniform1f(prog, HAZE_LOC_SURFACE_SIGMA_T, v.sigmaT);
+  glProgramUniform3fv(prog, HAZE_LOC_SURFACE_AMBIENT, 1, glm::value_ptr(frame.medium.ambient));
+  glProgramUniform1i(prog, HAZE_LOC_SURFACE_BEAM_COUNT, beams.count());
+  glProgramUniform1i(prog, HAZE_LOC_SURFACE_TILE_COLUMNS, tiled ? tiles.columns() : 0);
+  glProgramUniform1i(prog, HAZE_LOC_SURFACE_MASK_WORDS, tiles.maskWords());
+  beams.bindSoftShadows(prog);
+  density.bind(prog);
+  sun.bind(prog);
+  glBindTextureUnit(HAZE_UNIT_GBUFFER, gbuffer.id());
+  glBindTextureUnit(HAZE_UNIT_SCENE_DEPTH, depth.id());
+  glBindVertexArray(emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindFramebuffer(GL_FRAMEBUFFER, m.sceneFbo.id());
-  glEnable(GL_DEPTH_TEST);
+}
 
-  // The lens discs, after the venue so that they hide what lies behind them and their depth
-  // ends the beam pass's eye rays there (docs/rendering.md, "Lenses"). A few pixels each.
-  if (m.beams.count() > 0) {
-    const GLuint lensProg = m.lensProgram.id();
-    glUseProgram(lensProg);
-    glProgramUniformMatrix4fv(lensProg, HAZE_LOC_LENS_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj));
-    glProgramUniform1f(lensProg, HAZE_LOC_LENS_SIGMA_T, sigmaT);
-    glProgramUniform3fv(lensProg, HAZE_LOC_CAMERA_EYE, 1, glm::value_ptr(frame.camera.position));
-    m.density.bind(lensProg);
-    glBindVertexArray(m.emptyVao.id());
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, m.beams.count());
-  }
-  end();
+// The lens discs, after the venue so that they hide what lies behind them and their depth ends
+// the beam pass's eye rays there (docs/rendering.md, "Lenses"). A few pixels each.
+void Renderer::Impl::drawLenses(const FrameState& frame, const View& v) {
+  glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo.id());
+  if (beams.count() == 0) return;
+  gl::PassScope pass("lenses");
+  gl::Capability depthTest(GL_DEPTH_TEST, true), blend(GL_BLEND, false);
+  gl::DepthMask write(true);
+  glDepthFunc(GL_LESS);
+  const GLuint lensProg = lensProgram.id();
+  glUseProgram(lensProg);
+  glProgramUniformMatrix4fv(lensProg, HAZE_LOC_LENS_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(v.viewProj));
+  glProgramUniform1f(lensProg, HAZE_LOC_LENS_SIGMA_T, v.sigmaT);
+  glProgramUniform3fv(lensProg, HAZE_LOC_CAMERA_EYE, 1, glm::value_ptr(frame.camera.position));
+  density.bind(lensProg);
+  glBindVertexArray(emptyVao.id());
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, beams.count());
+}
 
-  begin(2);
-  times_.planeFragments =
-      m.beamPass.render(frame, m.beams, m.density, m.depth.id(), m.radianceOnlyFbo.id(), accumulate, &m.sun);
-  end();
-  // Visible dust (docs/rendering.md, "Particles"): a display option added after the
-  // radiometric composite, so with it off the image is exactly the radiometric one.
-  if (frame.particles.settings.enabled) {
-    begin(3);
-    glBindFramebuffer(GL_FRAMEBUFFER, m.sceneFbo.id());
-    glViewport(0, 0, w, h);
-    const ParticleStats ps = m.particles.render(frame, m.beams, m.density, viewProj,
-                                                static_cast<float>(w) / static_cast<float>(h), w, h,
-                                                m.venue.boundsMin(), m.venue.boundsMax());
-    end();
-    times_.particlesDrawn = ps.drawn;
-    times_.particlesWanted = ps.wanted;
-    times_.particlesGenerateMs = ps.generateMs;
-    if (ps.wanted > ps.drawn)
-      warnings_.push_back("particles: " + std::to_string(ps.drawn) + " of " + std::to_string(ps.wanted) +
-                          " drawn, the limit of " + std::to_string(frame.particles.limit) +
-                          " per frame (thinned evenly; lower the particle density)");
-  }
-  times_.accumulatedFrames = m.beamPass.accumulatedFrames();
-  times_.beamsDrawn = m.beamPass.beamsDrawn();
-  if (timing) {
-    times_.scatteringFragments = m.beamPass.scatteringFragments();
-    times_.refinedPixels = m.beamPass.refinedPixels();
-    if (settings_.tiledSurfaces && m.beams.count() > 0) times_.beamsPerTile = m.tiles.meanBeamsPerTile();
-    double* ms[4] = {&times_.shadowMapsMs, &times_.surfacesMs, &times_.beamsMs, &times_.particlesMs};
-    for (int i = 0; i < (frame.particles.settings.enabled ? 4 : 3); ++i) {
-      GLuint64 ns = 0;
-      glGetQueryObjectui64v(m.timers[i].id(), GL_QUERY_RESULT, &ns);
-      *ms[i] = static_cast<double>(ns) * 1e-6;
-    }
+void Renderer::Impl::drawParticles(const FrameState& frame, const View& v, PassTimes& times,
+                                   std::vector<std::string>& warnings) {
+  glBindFramebuffer(GL_FRAMEBUFFER, sceneFbo.id());
+  glViewport(0, 0, v.width, v.height);
+  const ParticleStats ps = particles.render(frame, beams, density, v.viewProj, v.aspect, v.width, v.height,
+                                            venue.boundsMin(), venue.boundsMax());
+  times.particlesDrawn = ps.drawn;
+  times.particlesWanted = ps.wanted;
+  times.particlesGenerateMs = ps.generateMs;
+  if (ps.wanted > ps.drawn)
+    warnings.push_back("particles: " + std::to_string(ps.drawn) + " of " + std::to_string(ps.wanted) +
+                       " drawn, the limit of " + std::to_string(frame.particles.limit) +
+                       " per frame (thinned evenly; lower the particle density)");
+}
+
+// The passes' counts, and with timing on their GL times (this waits for the GL).
+void Renderer::Impl::collectTimes(const FrameState& frame, const RenderSettings& settings, PassTimes& times) {
+  times.accumulatedFrames = beamPass.accumulatedFrames();
+  times.beamsDrawn = beamPass.beamsDrawn();
+  if (!settings.timePasses) return;
+  times.scatteringFragments = beamPass.scatteringFragments();
+  times.refinedPixels = beamPass.refinedPixels();
+  if (settings.tiledSurfaces && beams.count() > 0) times.beamsPerTile = tiles.meanBeamsPerTile();
+  double* ms[4] = {&times.shadowMapsMs, &times.surfacesMs, &times.beamsMs, &times.particlesMs};
+  for (int i = 0; i < (frame.particles.settings.enabled ? 4 : 3); ++i) {
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(timers[i].id(), GL_QUERY_RESULT, &ns);
+    *ms[i] = static_cast<double>(ns) * 1e-6;
   }
 }
 
@@ -383,11 +427,10 @@ void Renderer::setRadiance(const ImageRGB& image) {
 void Renderer::drawDisplay(const DisplaySettings& display, unsigned int framebuffer, int x, int y, int width,
                            int height) {
   Impl& m = *impl_;
+  gl::PassScope pass("display");
+  gl::Capability depthTest(GL_DEPTH_TEST, false), blend(GL_BLEND, false), scissor(GL_SCISSOR_TEST, false);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(x, y, width, height);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glDisable(GL_SCISSOR_TEST);
   const float bloom = std::clamp(display.bloom, 0.0f, 1.0f);
   const GLuint prog = bloom > 0.0f ? m.bloomPostProgram.id() : m.postProgram.id();
   glUseProgram(prog);

@@ -1,3 +1,4 @@
+#include "renderer/gl/scope.h"
 #include "renderer/sun_pass.h"
 
 #include <algorithm>
@@ -120,9 +121,9 @@ bool SunPass::update(const FrameState& frame, const GpuVenue& venue, const gl::P
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
   glUseProgram(depthProgram.id());
   glProgramUniformMatrix4fv(depthProgram.id(), HAZE_LOC_VIEW_PROJ, 1, GL_FALSE, glm::value_ptr(viewProj_));
-  glEnable(GL_DEPTH_TEST);
+  gl::PassScope pass("sun shadow map");
+  gl::Capability depthTest(GL_DEPTH_TEST, true), twoSided(GL_CULL_FACE, false);  // two-sided surfaces
   glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);  // two-sided surfaces
   // No polygon offset, unlike the beams' maps: an offset leaves a layer of air in front of
   // every surface that the map calls lit (a speckle of light on walls the sun never reaches,
   // from the march's last samples). Surfaces keep off their own depth by the normal offset in
