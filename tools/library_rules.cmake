@@ -1,7 +1,7 @@
 # The design's rule, checked at configure time: the pure-data libraries never reach GL, EGL,
 # GLFW or ImGui, however indirectly, and only the GUI reaches GLFW and ImGui. A link added
 # against the rule fails the configure step with the path that breaks it.
-set(HAZE_PURE_LIBRARIES haze_core haze_mesh haze_atmosphere haze_fixtures haze_scene haze_reference haze_shows haze_dmx haze_edit
+set(HAZE_PURE_LIBRARIES haze_core haze_mesh haze_atmosphere haze_fixtures haze_scene haze_reference haze_shows haze_dmx haze_edit haze_frame
     haze_import haze_output)
 set(HAZE_GL_ONLY PkgConfig::EGL PkgConfig::OPENGL haze_gl haze_renderer haze_shaders haze_app)
 set(HAZE_GUI_ONLY glfw PkgConfig::IMGUI haze_gui)
@@ -49,4 +49,65 @@ foreach(lib ${HAZE_PURE_LIBRARIES})
 endforeach()
 foreach(lib haze_app haze_renderer haze_gl haze_shaders)
   haze_check_forbidden(${lib} "${HAZE_GUI_ONLY}" "only the GUI links GLFW and ImGui")
+endforeach()
+
+# The layers, lowest first (docs/architecture.md, "Layers", lists the same): a library links
+# only libraries of lower layers, so dependencies point one way, down. A link within a layer or
+# upwards stops the configuration with the offending link.
+set(HAZE_LAYERS
+  "haze_core"
+  "haze_mesh haze_atmosphere"
+  "haze_fixtures"
+  "haze_scene haze_shows"
+  "haze_dmx haze_edit haze_import haze_reference haze_output haze_shaders"
+  "haze_frame haze_gl"
+  "haze_renderer"
+  "haze_app"
+  "haze_gui")
+
+# The layering test (tests/cli/layering.sh) plants a wrong link, -DHAZE_PLANTED_LINK="from;to",
+# to show that this check fails on it.
+if(HAZE_PLANTED_LINK)
+  list(GET HAZE_PLANTED_LINK 0 planted_from)
+  list(GET HAZE_PLANTED_LINK 1 planted_to)
+  target_link_libraries(${planted_from} PUBLIC ${planted_to})
+endif()
+
+set(layer 0)
+foreach(members ${HAZE_LAYERS})
+  string(REPLACE " " ";" members "${members}")
+  foreach(lib ${members})
+    set(haze_layer_of_${lib} ${layer})
+  endforeach()
+  math(EXPR layer "${layer} + 1")
+endforeach()
+foreach(members ${HAZE_LAYERS})
+  string(REPLACE " " ";" members "${members}")
+  foreach(lib ${members})
+    if(NOT TARGET ${lib})
+      continue()  # not built in this configuration (no GL, no GUI)
+    endif()
+    get_target_property(links ${lib} LINK_LIBRARIES)
+    if(NOT links)
+      continue()
+    endif()
+    foreach(dep ${links})
+      string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" dep "${dep}")
+      if(NOT dep MATCHES "^haze_")
+        continue()
+      endif()
+      if(NOT DEFINED haze_layer_of_${dep})
+        message(FATAL_ERROR "library rule: ${dep} (linked by ${lib}) is in no layer of HAZE_LAYERS")
+      endif()
+      if(NOT haze_layer_of_${dep} LESS haze_layer_of_${lib})
+        message(FATAL_ERROR "library rule broken: ${lib} -> ${dep} (a link must point to a lower layer; "
+                            "docs/architecture.md, \"Layers\")")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+foreach(lib ${HAZE_PURE_LIBRARIES})
+  if(NOT DEFINED haze_layer_of_${lib})
+    message(FATAL_ERROR "library rule: ${lib} is in no layer of HAZE_LAYERS")
+  endif()
 endforeach()
