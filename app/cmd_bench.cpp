@@ -200,10 +200,10 @@ int runBench(const Args& args) {
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
   if (*q == Quality::Reference)
-    return fail("--quality reference is the CPU integrator: time it against a GPU preset with --compare-reference");
-  if (!showPath.empty() && fixtures >= 0) return fail("--fixtures and --show exclude each other");
-  if (showPath.empty() && (!cue.empty() || !camera.empty())) return fail("--cue and --camera need --show");
-  if (showPath.empty() && cells != "separate") return fail("--cells needs --show");
+    return cli.usage("--quality reference is the CPU integrator: time it against a GPU preset with --compare-reference");
+  if (!showPath.empty() && fixtures >= 0) return cli.usage("--fixtures and --show exclude each other");
+  if (showPath.empty() && (!cue.empty() || !camera.empty())) return cli.usage("--cue and --camera need --show");
+  if (showPath.empty() && cells != "separate") return cli.usage("--cells needs --show");
   auto ctx = createHeadlessContext();
   if (!ctx) return fail(ctx.error().str());
   if (study) return runStudy(width, height);
@@ -214,22 +214,26 @@ int runBench(const Args& args) {
     venue = benchVenue(fixtures);
     frame = benchFrame(fixtures);
     frame.softShadows = true;  // as a show has them unless it asks for hard ones
-  } else if (Status s = loadBenchShow(showPath, cue, camera, cells == "merged", venue, frame, fixtures); !s) {
-    return fail(s.error().str());
+  } else {
+    auto checked = cli.readShow(showPath);
+    if (!checked) return kExitBadInput;
+    if (Status s = loadBenchShow(checked->show, checked->profiles, cue, camera, cells == "merged", venue, frame, fixtures);
+        !s)
+      return fail(s.error().str());
   }
-  if (noBodies && compareBodies) return fail("--no-bodies and --compare-bodies exclude each other");
-  if (compareBodies && densityCells > 0) return fail("--compare-bodies and --density exclude each other");
+  if (noBodies && compareBodies) return cli.usage("--no-bodies and --compare-bodies exclude each other");
+  if (compareBodies && densityCells > 0) return cli.usage("--compare-bodies and --density exclude each other");
   const bool compareShadows = shadows == "compare";
   if (compareShadows && (compareBodies || densityCells > 0 || sun || compareParticles))
-    return fail("--shadows compare excludes --compare-bodies, --density, --sun and --compare-particles");
+    return cli.usage("--shadows compare excludes --compare-bodies, --density, --sun and --compare-particles");
   if (!shadows.empty()) frame.softShadows = shadows != "hard";
   if (sun && (compareBodies || densityCells > 0 || compareParticles))
-    return fail("--sun excludes --density, --compare-bodies and --compare-particles");
+    return cli.usage("--sun excludes --density, --compare-bodies and --compare-particles");
   if (compareParticles && (compareBodies || densityCells > 0))
-    return fail("--compare-particles excludes --compare-bodies and --density");
-  if (mapBudgetMs > 0.0 && moveDeg <= 0.0) return fail("--map-budget needs --move");
+    return cli.usage("--compare-particles excludes --compare-bodies and --density");
+  if (mapBudgetMs > 0.0 && moveDeg <= 0.0) return cli.usage("--map-budget needs --move");
   if (moveDeg > 0.0 && (compareBodies || densityCells > 0 || sun || compareParticles || compareShadows))
-    return fail("--move excludes --density, --compare-bodies, --sun, --compare-particles and --shadows compare");
+    return cli.usage("--move excludes --density, --compare-bodies, --sun, --compare-particles and --shadows compare");
   if (noBodies) {  // the fixtures' housings left out, as haze render --no-bodies does
     frame.bodies.clear();
     frame.bodyMeshes.clear();

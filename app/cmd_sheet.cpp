@@ -71,17 +71,17 @@ int runSheet(const Args& args) {
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
   const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
-  if (out.empty()) return fail("no output given: -o SHEET.pdf");
-  if (std::filesystem::path(out).extension() != ".pdf") return fail(out + ": the sheet is a PDF (-o SHEET.pdf)");
+  if (out.empty()) return cli.usage("no output given: -o SHEET.pdf");
+  if (std::filesystem::path(out).extension() != ".pdf") return cli.usage(out + ": the sheet is a PDF (-o SHEET.pdf)");
   if (cameras.size() > kMaxCameras)
-    return fail("at most " + std::to_string(kMaxCameras) + " cameras fit a row (got " + std::to_string(cameras.size()) + ")");
+    return cli.usage("at most " + std::to_string(kMaxCameras) + " cameras fit a row (got " + std::to_string(cameras.size()) + ")");
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
 
-  auto show = loadShow(showPath);
-  if (!show) return fail(show.error().str());
-  auto profiles = loadProfiles(*show);
-  if (!profiles) return fail(profiles.error().str());
+  auto checked = cli.readShow(showPath);
+  if (!checked) return kExitBadInput;
+  const Show* show = &checked->show;
+  const ProfileSet* profiles = &checked->profiles;
   const CueList* cueList = show->findCueList(list);
   if (!cueList) return fail(showPath + ": no cue list" + (list.empty() ? "" : " named '" + list + "'"));
   if (cameras.empty()) cameras.push_back(show->cameras.empty() ? "" : show->cameras.front().name);
