@@ -11,40 +11,37 @@
 
 namespace haze {
 
-Status loadBenchShow(const std::string& file, const std::string& cue, const std::string& camera, bool mergeCells,
-                     Venue& venue, FrameState& frame, int& fixtures) {
-  auto show = loadShow(file);
-  if (!show) return show.error();
-  auto profiles = loadProfiles(*show);
-  if (!profiles) return profiles.error();
-  StageState state = defaultState(*show);
+Status loadBenchShow(const Show& show, const ProfileSet& profiles, const std::string& cue,
+                     const std::string& camera, bool mergeCells, Venue& venue, FrameState& frame, int& fixtures) {
+  const std::string file = show.file.string();
+  StageState state = defaultState(show);
   HazerSchedule hazers;
-  if (const CueList* list = show->findCueList(""); list && !list->cues.empty()) {
+  if (const CueList* list = show.findCueList(""); list && !list->cues.empty()) {
     size_t index = 0;
     if (!cue.empty()) {
       auto found = findCue(*list, cue);
       if (!found) return Error{file, "/cue_lists/0", found.error().message};
       index = *found;
     }
-    state = trackedState(*show, *profiles, *list, index);
-    hazers = hazerSchedule(*show, {{list, index}}, {});
+    state = trackedState(show, profiles, *list, index);
+    hazers = hazerSchedule(show, {{list, index}}, {});
   } else if (!cue.empty()) {
     return Error{file, "/cue_lists", "the show has no cues; --cue " + cue + " names none"};
   }
-  if (!show->venueGltf.empty()) {
-    auto v = loadVenue(show->resolve(show->venueGltf));
+  if (!show.venueGltf.empty()) {
+    auto v = loadVenue(show.resolve(show.venueGltf));
     if (!v) return v.error();
     venue = std::move(*v);
   }
   // The density field as a still of the cue shows it (at its GO).
   AtmosphereField atmosphere;
   std::vector<std::string> warnings;
-  auto density = atmosphere.at(*show, venue.boundsMin, venue.boundsMax, 0.0, warnings, hazers);
+  auto density = atmosphere.at(show, venue.boundsMin, venue.boundsMax, 0.0, warnings, hazers);
   for (const std::string& w : warnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
-  auto f = buildFrame(*show, *profiles, state, camera, FrameOptions{.mergeCells = mergeCells, .density = std::move(density)});
+  auto f = buildFrame(show, profiles, state, camera, FrameOptions{.mergeCells = mergeCells, .density = std::move(density)});
   if (!f) return f.error();
   frame = std::move(*f);
-  fixtures = static_cast<int>(show->fixtures.size());
+  fixtures = static_cast<int>(show.fixtures.size());
   return Ok{};
 }
 

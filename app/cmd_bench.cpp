@@ -99,7 +99,8 @@ struct BenchOptions {
   double moveDeg = 0.0, mapBudgetMs = 0.0;
 };
 
-std::optional<int> parseOptions(const Args& args, BenchOptions& o) {
+// The command line that fills `o` (it keeps references to o's fields).
+CommandLine benchCommandLine(BenchOptions& o) {
   CommandLine cli("haze bench", kBenchUsage);
   cli.integer("--fixtures", o.fixtures, 0, 4096, "0..4096")
       .text("--show", o.showPath, "a show file")
@@ -126,7 +127,7 @@ std::optional<int> parseOptions(const Args& args, BenchOptions& o) {
       .choice("--shadows", o.shadows, {"soft", "hard", "compare"})
       .number("--move", o.moveDeg, 0.0, 90.0, "0..90 degrees per frame")
       .number("--map-budget", o.mapBudgetMs, 0.0, 1e6, "milliseconds, 0 = unlimited");
-  return cli.parse(args);
+  return cli;
 }
 
 // The options that exclude each other, as one line; none when the combination is good.
@@ -464,22 +465,28 @@ Status compareWithReference(const Venue& venue, const FrameState& frame, const B
   return Ok{};
 }
 
-// The bench scene of --fixtures N, or the show's cue.
-Status loadFrame(BenchOptions& o, Venue& venue, FrameState& frame) {
+// The bench scene of --fixtures N, or the show's cue (the show checked as `haze validate` checks
+// it: its problems are printed and the command exits kExitBadInput).
+std::optional<int> loadFrame(const CommandLine& cli, BenchOptions& o, Venue& venue, FrameState& frame) {
   if (o.showPath.empty()) {
     o.fixtures = o.fixtures < 0 ? 16 : o.fixtures;
     venue = benchVenue(o.fixtures);
     frame = benchFrame(o.fixtures);
     frame.softShadows = true;  // as a show has them unless it asks for hard ones
-  } else if (Status s = loadBenchShow(o.showPath, o.cue, o.camera, o.cells == "merged", venue, frame, o.fixtures); !s) {
-    return s;
+  } else {
+    auto checked = cli.readShow(o.showPath);
+    if (!checked) return kExitBadInput;
+    if (Status s = loadBenchShow(checked->show, checked->profiles, o.cue, o.camera, o.cells == "merged", venue, frame,
+                                 o.fixtures);
+        !s)
+      return cli.fail(s.error().str());
   }
   if (!o.shadows.empty()) frame.softShadows = o.shadows != "hard";  // compare: soft, against a hard variant
   if (o.noBodies) {  // the fixtures' housings left out, as haze render --no-bodies does
     frame.bodies.clear();
     frame.bodyMeshes.clear();
   }
-  return Ok{};
+  return std::nullopt;
 }
 
 // The comparison asked for, if any: its frame varied from the base, on renderers of its own.
@@ -510,18 +517,19 @@ Result<std::optional<Comparison>> makeComparison(const BenchOptions& o, const Ve
 
 int runBench(const Args& args) {
   BenchOptions o;
-  if (auto done = parseOptions(args, o)) return *done;
+  const CommandLine cli = benchCommandLine(o);
+  if (auto done = cli.parse(args)) return *done;
   auto q = parseQuality(o.quality);
   if (!q) return fail(q.error().str());
   if (*q == Quality::Reference)
-    return fail("--quality reference is the CPU integrator: time it against a GPU preset with --compare-reference");
-  if (auto why = conflict(o)) return fail(*why);
+    return cli.usage("--quality reference is the CPU integrator: time it against a GPU preset with --compare-reference");
+  if (auto why = conflict(o)) return cli.usage(*why);
   auto ctx = createHeadlessContext();
   if (!ctx) return fail(ctx.error().str());
   if (o.study) return runStudy(o.width, o.height);
   Venue venue;
   FrameState frame;
-  if (Status s = loadFrame(o, venue, frame); !s) return fail(s.error().str());
+  if (auto failed = loadFrame(cli, o, venue, frame)) return *failed;
   const RenderSettings settings = benchSettings(o, *q);
   auto renderer = Renderer::create(venue, settings);
   if (!renderer) return fail(renderer.error().str());

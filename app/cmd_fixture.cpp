@@ -81,7 +81,7 @@ void printText(const nlohmann::ordered_json& f) {
 int runFixture(const Args& args) {
   if (args.empty() || args[0] != "info") {
     std::cerr << "haze fixture: expected the subcommand \"info\"; " << kUsage << "\n";
-    return 1;
+    return kExitUsage;
   }
   std::string file;
   bool json = false;

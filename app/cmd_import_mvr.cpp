@@ -22,8 +22,7 @@ int runImportMvr(const Args& args) {
                   std::string(kUsage) +
                       "\n  Writes the show, SHOW_gdtf/ with the embedded GDTF files and SHOW_venue.gltf"
                       " (+ .bin) from the MVR's geometry, next to SHOW.\n  Warnings that say the same"
-                      " thing are folded into one line with a count; --verbose prints every one.\n",
-                  2);
+                      " thing are folded into one line with a count; --verbose prints every one.\n");
   bool noVenue = false;
   cli.text("-o|--output", output, "a show file name")
       .flag("--force", options.force)
@@ -32,11 +31,11 @@ int runImportMvr(const Args& args) {
       .positional(input, "MVR file");
   if (auto done = cli.parse(args)) return *done;
   if (noVenue) options.writeVenue = false;
-  if (output.empty()) return cli.fail("expected an MVR file and -o SHOW; " + std::string(kUsage));
+  if (output.empty()) return cli.usage("expected an MVR file and -o SHOW; " + std::string(kUsage));
   auto result = importMvr(input, output, options);
   if (!result.ok()) {
     std::cerr << result.error().str() << "\n";
-    return 1;
+    return kExitBadInput;
   }
   const std::vector<std::string> shown = verbose ? result->warnings : groupMvrWarnings(result->warnings);
   for (const std::string& w : shown) std::cerr << "warning: " << input << ":" << w << "\n";

@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <string>
 #include <system_error>
 
@@ -18,9 +20,10 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/render_job.h"
+#include "shows/dmx/dmx_reach.h"
+#include "shows/frame/live_playback.h"
 #include "shows/frame/live_record.h"
 #include "shows/frame/state_json.h"
-#include "shows/frame/live_playback.h"
 #include "shows/dmx/midi_input.h"
 #include "shows/dmx/midi_timecode.h"
 #include "shows/dmx/osc_command.h"
@@ -57,6 +60,23 @@ constexpr const char* kUsage =
     "universe with DMX follow the console. --record-cue N: on exit, the commanded stage (where the\n"
     "heads are going, not where they are) is recorded into cue N (tracking: only what differs) and\n"
     "the show saved safely.\n";
+
+// Per universe: the fixtures DMX drives, each it cannot (one line, with why), and those whose
+// intensity no channel sets (at full: docs/live.md, "What the console drives").
+void printReach(const std::vector<UniverseReach>& reach) {
+  for (const UniverseReach& u : reach) {
+    const size_t patched = u.driven.size() + u.undriven.size();
+    std::fprintf(stderr, "haze live: universe %d: drives %zu of %zu patched fixtures%s%s\n", u.universe,
+                 u.driven.size(), patched, u.driven.empty() ? "" : ": ", idRanges(u.driven).c_str());
+    for (const auto& [id, why] : u.undriven)
+      std::fprintf(stderr, "haze live: universe %d: cannot drive fixture %d: %s\n", u.universe, id, why.c_str());
+    std::map<std::string, std::vector<int>> atFull;
+    for (const auto& [id, why] : u.atFull) atFull[why].push_back(id);
+    for (const auto& [why, ids] : atFull)
+      std::fprintf(stderr, "haze live: universe %d: fixture%s %s: %s; intensity stays at full whatever DMX sends\n",
+                   u.universe, ids.size() == 1 ? "" : "s", idRanges(ids).c_str(), why.c_str());
+  }
+}
 
 volatile std::sig_atomic_t gStop = 0;
 void onSignal(int) { gStop = 1; }
@@ -185,24 +205,24 @@ int runLive(const Args& args) {
   else if (quality == "default") render.quality = Quality::Default;
   else if (quality == "high") render.quality = Quality::High;
   else if (quality == "reference") render.quality = Quality::Reference;
-  else return fail("--quality '" + quality + "' is not one of draft|default|high|reference");
+  else return cli.usage("--quality '" + quality + "' is not one of draft|default|high|reference");
   if (!artNet && !sacn) artNet = sacn = true;
   if (oscPort > 0 && ((artNet && oscPort == artNetPort) || (sacn && oscPort == sacnPort)))
-    return fail("--osc " + std::to_string(oscPort) + " is the Art-Net or sACN port; expected a port of its own (e.g. 9000)");
-  if (timecode && !artNet) return fail("--timecode reads ArtTimeCode, which comes over Art-Net; drop --sacn or add --artnet");
-  if (!recordLabel.empty() && recordCue.empty()) return fail("--label names the cue --record-cue records; give --record-cue N");
+    return cli.usage("--osc " + std::to_string(oscPort) + " is the Art-Net or sACN port; expected a port of its own (e.g. 9000)");
+  if (timecode && !artNet) return cli.usage("--timecode reads ArtTimeCode, which comes over Art-Net; drop --sacn or add --artnet");
+  if (!recordLabel.empty() && recordCue.empty()) return cli.usage("--label names the cue --record-cue records; give --record-cue N");
   if (!recordCue.empty() && !isCueNumber(recordCue))
-    return fail("--record-cue '" + recordCue + "' is not a cue number; expected one like 10 or 1.5");
+    return cli.usage("--record-cue '" + recordCue + "' is not a cue number; expected one like 10 or 1.5");
   options.udp.artNet = artNet;
   options.udp.sacn = sacn;
   options.udp.artNetPort = artNetPort;
   options.udp.sacnPort = sacnPort;
   options.input.merge.onLoss = onLoss == "blackout" ? LossPolicy::Blackout : LossPolicy::HoldLastLook;
 
-  Result<Show> show = loadShow(showPath);
-  if (!show) return fail(show.error().str());
-  Result<ProfileSet> profiles = loadProfiles(*show);
-  if (!profiles) return fail(profiles.error().str());
+  auto checked = cli.readShow(showPath);
+  if (!checked) return kExitBadInput;
+  Show* show = &checked->show;  // --record-cue records into it
+  const ProfileSet* profiles = &checked->profiles;
   const CueList* cueList = nullptr;
   for (const CueList& l : show->cueLists)
     if (cueListName.empty() || l.name == cueListName) {
@@ -217,18 +237,26 @@ int runLive(const Args& args) {
       std::none_of(cueList->cues.begin(), cueList->cues.end(), [](const Cue& c) { return !c.timecode.empty(); }))
     std::fprintf(stderr, "haze live: --timecode: no cue of the played list has a \"timecode\"; nothing will fire\n");
 
-  // Patched fixtures that DMX cannot drive are named once, so a dark fixture is explained.
-  for (const FixtureDef& f : show->fixtures) {
-    if (!f.patch) continue;
-    auto p = profiles->find(f.profile);
-    const bool hasMode = p != profiles->end() && p->second &&
-                         std::any_of(p->second->modes.begin(), p->second->modes.end(),
-                                     [&](const DmxMode& m) { return m.name == f.mode || f.mode.empty(); });
-    if (!hasMode) {
-      std::fprintf(stderr, "haze live: fixture %d: profile \"%s\" has no DMX mode \"%s\"; it stays dark\n",
-                   f.id, f.profile.c_str(), f.mode.c_str());
-    }
-  }
+  // What the console can reach, per universe, so a fixture that ignores it is explained at once.
+  const std::vector<UniverseReach> reach = dmxReach(*show, *profiles);
+  printReach(reach);
+  std::set<int> drivingUniverses, warnedUniverses;
+  for (const UniverseReach& u : reach)
+    if (!u.driven.empty()) drivingUniverses.insert(u.universe);
+  uint64_t goodSeen = 0, unwatchedSeen = 0;
+  // Once per universe: DMX arrives for it, and it drives nothing.
+  const auto warnIdleUniverses = [&](LiveReceiver& r) {
+    if (r.stats().good == goodSeen && r.stats().unwatched == unwatchedSeen) return;
+    goodSeen = r.stats().good;
+    unwatchedSeen = r.stats().unwatched;
+    for (int u : r.stats().unwatchedUniverses)
+      if (warnedUniverses.insert(u).second)
+        std::fprintf(stderr, "haze live: warning: universe %d receives DMX, but no fixture of the show is patched on it\n", u);
+    for (const DmxSourceInfo& s : r.sources())
+      if (!drivingUniverses.count(s.universe) && warnedUniverses.insert(s.universe).second)
+        std::fprintf(stderr, "haze live: warning: universe %d receives DMX, but it drives no fixture (see the lines "
+                     "above for why)\n", s.universe);
+  };
 
   auto live = LiveReceiver::open(*show, *profiles, options);
   if (!live) return fail(live.error().str());
@@ -333,6 +361,7 @@ int runLive(const Args& args) {
     heads.advance(commanded, now, false);
     commanded = playback ? livePlayback.stage(LiveReceiver::nowS(), receiver.state(), receiver.input().dmxFixtures())
                          : receiver.state();
+    warnIdleUniverses(receiver);
     if (!seeded && receiver.stats().good > 0) {
       heads.reset(commanded, now);
       seeded = true;

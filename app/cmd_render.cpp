@@ -12,6 +12,7 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/exposure_lock.h"
 #include "shows/frame/list_plays.h"
 #include "app/progress.h"
 #include "app/render_session.h"
@@ -29,7 +30,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: haze render SHOW [--cue N | --all-cues | --timecode hh:mm:ss:ff] [--at S] [--list NAME] [--camera NAME]\n"
     "                   [--width W --height H] [--quality draft|default|high|reference] [--exposure EV]\n"
-    "                   [--exposure-mode auto|manual] [--bloom F] [--exr-pixel half|float] [--particles|--no-particles]\n"
+    "                   [--exposure-mode auto|manual|per-frame] [--bloom F] [--exr-pixel half|float] [--particles|--no-particles]\n"
     "                   -o OUT.png|OUT.pfm|OUT.exr (one image) | -o DIR/ (with --all-cues)\n"
     "       haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--list NAME] [--from CUE] [--to CUE]\n"
     "                   [--fps N] [--hold S] [--duration S] [--codec NAME] [--caption] [--progress]\n"
@@ -41,6 +42,8 @@ constexpr const char* kUsage =
     "PNGs are metered like a camera (auto, the default) and --exposure EV is an offset from the\n"
     "metered exposure; with --exposure-mode manual it is absolute (EV 0: 50 cd/m^2 maps to 1).\n"
     "A camera's \"exposure\" in the show is used unless these are given. PFMs are never exposed.\n"
+    "A --video or --all-cues run is metered once, on its brightest cue, and holds that exposure (a\n"
+    "fade darkens as on stage); --exposure-mode per-frame meters every image instead.\n"
     "--bloom F spreads the fraction F (0..1) of the light as lens glare in PNGs; PFMs stay radiometric.\n"
     "EXRs hold the same radiometric L as PFMs (cd/m^2, linear Rec. 709), as half (the default) or\n"
     "float (--exr-pixel float), with the show and cue in the header's comments.\n"
@@ -98,7 +101,7 @@ int runRender(const Args& args) {
       .integer("--height", height, 1, 16384, "a whole number 1..16384")
       .choice("--quality", quality, {"draft", "default", "high", "reference"})
       .number("--exposure", exposure, -100, 100, "a number of EV")
-      .choice("--exposure-mode", exposureMode, {"auto", "manual"})
+      .choice("--exposure-mode", exposureMode, {"auto", "manual", "per-frame"})
       .number("--bloom", bloom, 0, 1, "a fraction 0..1")
       .choice("--movement", movement, {"real", "instant"})
       .choice("--cells", cells, {"separate", "merged"})
@@ -123,42 +126,45 @@ int runRender(const Args& args) {
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
   const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
-  if (!playError.empty()) return fail("--play " + playError);
+  if (!playError.empty()) return cli.usage("--play " + playError);
   if (!plays.empty() && (!video.empty() || allCues || !cue.empty() || !list.empty() || !timecodeText.empty()))
-    return fail("--play renders one still of the lists it names; expected no --video, --all-cues, --cue, --list or "
+    return cli.usage("--play renders one still of the lists it names; expected no --video, --all-cues, --cue, --list or "
                 "--timecode with it");
   if (!video.empty() && (!out.empty() || allCues || !cue.empty() || at >= 0))
-    return fail("--video renders a cue range (--from, --to): -o, --all-cues, --cue and --at are for stills");
+    return cli.usage("--video renders a cue range (--from, --to): -o, --all-cues, --cue and --at are for stills");
   if (video.empty() && (!from.empty() || !to.empty()))
-    return fail("--from and --to choose the cues of a --video");
+    return cli.usage("--from and --to choose the cues of a --video");
   if (out.empty() && video.empty())
-    return fail("no output given: -o OUT.png|OUT.pfm|OUT.exr, -o DIR/ with --all-cues, or --video OUT.mp4");
-  if (allCues && !cue.empty()) return fail("--cue and --all-cues exclude each other");
+    return cli.usage("no output given: -o OUT.png|OUT.pfm|OUT.exr, -o DIR/ with --all-cues, or --video OUT.mp4");
+  if (allCues && !cue.empty()) return cli.usage("--cue and --all-cues exclude each other");
   std::optional<Timecode> timecode;
   const int rate = std::stoi(timecodeRate);
   if (!timecodeText.empty()) {
     timecode = parseTimecode(timecodeText);
     if (!timecode || timecode->frames >= rate)
-      return fail("--timecode: expected hh:mm:ss:ff within a day, frames below " + timecodeRate + ", got '" +
+      return cli.usage("--timecode: expected hh:mm:ss:ff within a day, frames below " + timecodeRate + ", got '" +
                   timecodeText + "'");
-    if (allCues || !cue.empty() || at >= 0) return fail("--timecode chooses the moment itself: no --cue, --all-cues or --at");
+    if (allCues || !cue.empty() || at >= 0) return cli.usage("--timecode chooses the moment itself: no --cue, --all-cues or --at");
     if (!from.empty() || !to.empty() || !timelineFile.empty())
-      return fail("--timecode plays the cues at their timecodes: no --from, --to or --timeline with it");
+      return cli.usage("--timecode plays the cues at their timecodes: no --from, --to or --timeline with it");
   }
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
+  // per-frame: auto exposure metered on every image, also in a video or an --all-cues run.
+  const bool perFrame = exposureMode == "per-frame";
+  if (perFrame) exposureMode = "auto";
 
-  auto show = loadShow(showPath);
-  if (!show) return fail(show.error().str());
-  auto profiles = loadProfiles(*show);
-  if (!profiles) return fail(profiles.error().str());
+  auto checked = cli.readShow(showPath);
+  if (!checked) return kExitBadInput;
+  const Show* show = &checked->show;
+  const ProfileSet* profiles = &checked->profiles;
   RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
                            .quality = *q, .exposureMode = parseExposureMode(exposureMode),
                            .bloom = static_cast<float>(bloom), .mergeCells = cells == "merged", .bodies = !noBodies,
                            .exrPixel = *parseExrPixel(exrPixel), .progress = progress};
   if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
   if (!shadows.empty()) options.softShadows = shadows == "soft";
-  if (particlesOn && particlesOff) return fail("--particles and --no-particles exclude each other");
+  if (particlesOn && particlesOff) return cli.usage("--particles and --no-particles exclude each other");
   if (particlesOn || particlesOff) options.particles = particlesOn;
   if (!plays.empty()) {
     auto state = playListsAt(*show, *profiles, plays, at < 0 ? 1e9 : at, movement == "real");
@@ -180,6 +186,17 @@ int runRender(const Args& args) {
 
   auto session = RenderSession::open(*show, options);
   if (!session) return fail(session.error().str());
+  // A video or an --all-cues run under auto exposure is metered once, on the brightest of its cues
+  // (app/exposure_lock.h), so fades and the balance between cues show as they are on stage.
+  const auto lockExposure = [&](size_t from, size_t to) -> Status {
+    if (perFrame || exposureChoiceFor(*show, options).mode != ExposureMode::Auto) return Ok{};
+    auto metered = meterCueList(**session, *show, *profiles, *cueList, from, to);
+    if (!metered) return metered.error();
+    (*session)->lockMeteredEv(metered->meteredEv);
+    std::fprintf(stderr, "haze render: exposure metered once, on cue %s (the brightest); --exposure-mode per-frame "
+                 "meters every image\n", cueList->cues[metered->cue].number.c_str());
+    return Ok{};
+  };
 
   if (!video.empty()) {
     VideoJob job{.codec = codec, .out = video, .progress = progress, .caption = caption};
@@ -199,7 +216,7 @@ int runRender(const Args& args) {
       *index = *found;
     }
     if (!timelineFile.empty()) {
-      if (!from.empty() || !to.empty()) return fail("--timeline gives the GOs itself: no --from or --to with it");
+      if (!from.empty() || !to.empty()) return cli.usage("--timeline gives the GOs itself: no --from or --to with it");
       auto timeline = readTimeline(timelineFile, *show, *cueList, hold);
       if (!timeline) return fail(timeline.error().str());
       plan.timeline = std::move(*timeline);
@@ -207,6 +224,11 @@ int runRender(const Args& args) {
     if (plan.from > plan.to)
       return fail("--from " + cueList->cues[plan.from].number + " comes after --to " + cueList->cues[plan.to].number +
                   " in cue list '" + cueList->name + "'");
+    const bool wholeList = plan.timeline || plan.timecodeStart;
+    if (Status s = lockExposure(wholeList ? 0 : plan.from - (plan.from > 0 ? 1 : 0),
+                                wholeList ? cueList->cues.size() - 1 : plan.to);
+        !s)
+      return fail(s.error().str());
     const auto s = renderVideo(**session, *show, *profiles, job);
     if (!s) return fail(s.error().str());
     std::printf("%s\n", video.c_str());
@@ -256,6 +278,7 @@ int runRender(const Args& args) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) return fail(out + ": cannot create the folder: " + ec.message());
+    if (Status s = lockExposure(0, cueList->cues.size() - 1); !s) return fail(s.error().str());
     Progress report("haze render", "cues", static_cast<long>(cueList->cues.size()), progress);
     for (size_t i = 0; i < cueList->cues.size(); ++i) {
       const auto file = dir / ("cue-" + cueList->cues[i].number + ".png");

@@ -1,7 +1,10 @@
 // `haze sheet SHOW -o SHEET.pdf [--list NAME] [--camera NAME]... [--quality Q] [--progress]`: the
 // review sheet for the board operator (docs/output.md): per cue its number, label, timing, a
-// thumbnail from each camera and what changes from the cue before; then the patch.
+// thumbnail from each camera and what changes from the cue before (app/sheet_changes.h); then
+// the patch, by universe and address.
+#include <algorithm>
 #include <cstdio>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -11,6 +14,7 @@
 #include "app/commands.h"
 #include "app/progress.h"
 #include "app/render_session.h"
+#include "app/sheet_changes.h"
 #include "shows/frame/state_json.h"
 #include "renderer/output/sheet_pdf.h"
 #include "shows/hazer_levels.h"
@@ -23,7 +27,8 @@ constexpr const char* kUsage =
     "usage: haze sheet SHOW -o SHEET.pdf [--list NAME] [--camera NAME]... [--quality Q] [--progress]\n"
     "  One row per cue of the list (default: the first): number, label, fade, delay, follow, a\n"
     "  thumbnail from each --camera (default: the show's first; at most 3), and the fixtures that\n"
-    "  change from the cue before and to what; the patch on its own page. A4 landscape.\n";
+    "  change from the cue before and to what, as ranges of one type (\"11-20 Alpha Spot @ 70 %,\n"
+    "  palette Blue, gobo Spokes\"); the patch by universe and address on its own page. A4 landscape.\n";
 
 constexpr int kMaxCameras = 3;
 constexpr int kThumbPixelsWide = 320, kThumbPixelsHigh = 180;  // twice the printed size
@@ -32,25 +37,6 @@ std::string seconds(double s) {
   char text[32];
   std::snprintf(text, sizeof text, "%g s", s);
   return text;
-}
-
-// "101 Spot SL: intensity 0.8, pan 30" per fixture whose attributes differ between the states.
-std::vector<std::string> changesBetween(const Show& show, const nlohmann::ordered_json& before,
-                                        const nlohmann::ordered_json& after) {
-  std::vector<std::string> lines;
-  for (const auto& [id, now] : after.items()) {
-    std::string parts;
-    for (const auto& [key, value] : now.items()) {
-      const auto was = before.find(id);
-      if (was != before.end() && was->contains(key) && (*was)[key] == value) continue;
-      std::string shown = value.is_string() ? value.get<std::string>() : value.dump();
-      parts += (parts.empty() ? "" : ", ") + key + " " + shown;
-    }
-    if (parts.empty()) continue;
-    const FixtureDef* f = show.findFixture(std::stoi(id));
-    lines.push_back(id + (f && !f->name.empty() ? " " + f->name : "") + ": " + parts);
-  }
-  return lines;
 }
 
 }  // namespace
@@ -71,17 +57,17 @@ int runSheet(const Args& args) {
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
   const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
-  if (out.empty()) return fail("no output given: -o SHEET.pdf");
-  if (std::filesystem::path(out).extension() != ".pdf") return fail(out + ": the sheet is a PDF (-o SHEET.pdf)");
+  if (out.empty()) return cli.usage("no output given: -o SHEET.pdf");
+  if (std::filesystem::path(out).extension() != ".pdf") return cli.usage(out + ": the sheet is a PDF (-o SHEET.pdf)");
   if (cameras.size() > kMaxCameras)
-    return fail("at most " + std::to_string(kMaxCameras) + " cameras fit a row (got " + std::to_string(cameras.size()) + ")");
+    return cli.usage("at most " + std::to_string(kMaxCameras) + " cameras fit a row (got " + std::to_string(cameras.size()) + ")");
   auto q = parseQuality(quality);
   if (!q) return fail(q.error().str());
 
-  auto show = loadShow(showPath);
-  if (!show) return fail(show.error().str());
-  auto profiles = loadProfiles(*show);
-  if (!profiles) return fail(profiles.error().str());
+  auto checked = cli.readShow(showPath);
+  if (!checked) return kExitBadInput;
+  const Show* show = &checked->show;
+  const ProfileSet* profiles = &checked->profiles;
   const CueList* cueList = show->findCueList(list);
   if (!cueList) return fail(showPath + ": no cue list" + (list.empty() ? "" : " named '" + list + "'"));
   if (cameras.empty()) cameras.push_back(show->cameras.empty() ? "" : show->cameras.front().name);
@@ -120,14 +106,25 @@ int runSheet(const Args& args) {
     row.timing = "fade " + seconds(cue.fadeS) + ", delay " + seconds(cue.delayS) + ", follow " +
                  (cue.followS ? seconds(*cue.followS) : std::string("-"));
     const nlohmann::ordered_json after = stageStateJson(*show, *profiles, states[i]);
-    row.changes = changesBetween(*show, before, after);
+    row.changes = sheetChanges(*show, *profiles, cue, before, after);
     before = after;
   }
-  for (const FixtureDef& f : show->fixtures)
+  // The patch as the desk patches: by universe and address, the unpatched last by id.
+  std::vector<const FixtureDef*> patchOrder;
+  for (const FixtureDef& f : show->fixtures) patchOrder.push_back(&f);
+  std::stable_sort(patchOrder.begin(), patchOrder.end(), [](const FixtureDef* a, const FixtureDef* b) {
+    const auto key = [](const FixtureDef* f) {
+      return std::tuple(!f->patch, f->patch ? f->patch->universe : 0, f->patch ? f->patch->address : 0, f->id);
+    };
+    return key(a) < key(b);
+  });
+  for (const FixtureDef* fp : patchOrder) {
+    const FixtureDef& f = *fp;
     doc.patch.push_back({.fixture = std::to_string(f.id) + (f.name.empty() ? "" : " " + f.name),
                          .profile = f.profile, .mode = f.mode.empty() ? "-" : f.mode,
                          .universe = f.patch ? std::to_string(f.patch->universe) : "-",
                          .address = f.patch ? std::to_string(f.patch->address) : "unpatched"});
+  }
   if (Status s = writeSheetPdf(doc, out); !s) return fail(s.error().str());
   std::printf("%s\n", out.c_str());
   return 0;

@@ -2,7 +2,7 @@
 // S seconds after GO into cue N from the full state of the cue before it (docs/show-format.md). With
 // --follow, follows fire as they would on stage (cue N's follow may GO the next cue, and so on).
 // `--play LIST=CUE[@MASTER][+GO_S]` (repeated) plays several lists at once instead (shows/frame/list_plays.h).
-// Bad arguments or a broken show give one line on stderr and exit 1 (2 for usage).
+// A show `haze validate` refuses gives its lines on stderr and exit 1; bad arguments exit 2.
 #include <cmath>
 #include <iostream>
 
@@ -51,7 +51,7 @@ int runState(const Args& args) {
   bool json = false, follow = false;
   std::vector<ListPlay> plays;
   std::string playError;
-  CommandLine cli("haze state", kUsage, 2);
+  CommandLine cli("haze state", kUsage);
   cli.custom("--play", "LIST=CUE[@MASTER][+GO_S]", [&](const std::string& v) {
     auto p = parseListPlay(v);
     if (!p) {
@@ -69,21 +69,15 @@ int runState(const Args& args) {
       .choice("--movement", movement, {"real", "instant"})
       .positional(file, "show");
   if (auto done = cli.parse(args)) return *done;
-  if (!playError.empty()) return cli.fail("--play " + playError);
+  if (!playError.empty()) return cli.usage("--play " + playError);
   if (!plays.empty() && (!cueNumber.empty() || !listName.empty()))
-    return cli.fail("--play names its lists and cues itself; expected no --cue or --list with it");
-  if (cueNumber.empty() && plays.empty()) return cli.fail("expected --cue N (or --play LIST=CUE)");
+    return cli.usage("--play names its lists and cues itself; expected no --cue or --list with it");
+  if (cueNumber.empty() && plays.empty()) return cli.usage("expected --cue N (or --play LIST=CUE)");
 
-  auto show = loadShow(file);
-  if (!show) {
-    std::cerr << show.error().str() << "\n";
-    return 1;
-  }
-  auto profiles = loadProfiles(*show);
-  if (!profiles) {
-    std::cerr << profiles.error().str() << "\n";
-    return 1;
-  }
+  auto checked = cli.readShow(file);
+  if (!checked) return kExitBadInput;
+  const Show* show = &checked->show;
+  const ProfileSet* profiles = &checked->profiles;
   StageState state;
   HazerSchedule hazers;  // the hazers' levels over the same playback (docs/shows.md, "Hazers in cues")
   const bool atGiven = atS < 1e9;

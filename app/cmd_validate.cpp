@@ -2,7 +2,7 @@
 // ("file:pointer: sentence"), exit 1; a valid show prints a one-line summary on stdout (and a
 // line saying so when an older format version was migrated) and exits 0. --save-as writes the
 // valid show as read, in the newest format version, to OUT. A hazer outside the venue is a
-// warning (the venue is read for that only). Bad arguments exit 2.
+// warning (the venue is read for that only). Bad arguments exit 2 (app/commands.h).
 #include <iostream>
 
 #include "shows/frame/atmosphere_field.h"
@@ -36,34 +36,32 @@ int runValidate(const Args& args) {
   CommandLine cli("haze validate",
                   std::string(kUsage) +
                       "\n  Checks a show file and its profiles; lists every problem with its JSON pointer.\n"
-                      "  --save-as OUT  write the valid show, in the newest format version, to OUT\n",
-                  2);
+                      "  --save-as OUT  write the valid show, in the newest format version, to OUT\n");
   cli.text("--save-as", saveAs, "a file to write the show to").positional(file, "show");
   if (auto done = cli.parse(args)) return *done;
-  std::vector<Error> problems = validateShowFile(file);
+  CheckedShow checked = checkShowFile(file);
+  const std::vector<Error>& problems = checked.problems;
   for (const Error& e : problems) std::cerr << e.str() << "\n";
   if (!problems.empty()) {
     std::cerr << file << ": " << problems.size() << (problems.size() == 1 ? " problem" : " problems") << "\n";
-    return 1;
+    return kExitBadInput;
   }
-  auto show = loadShow(file);
+  Show& show = checked.show;
   size_t cues = 0;
-  if (show)
-    for (const CueList& l : show->cueLists) cues += l.cues.size();
-  std::cout << file << ": valid (" << (show ? show->fixtures.size() : 0) << " fixtures, "
-            << (show ? show->groups.size() : 0) << " groups, " << (show ? show->palettes.size() : 0) << " palettes, "
-            << (show ? show->cueLists.size() : 0) << " cue lists, " << cues << " cues)\n";
-  if (show && show->fileVersion < kShowFormatVersion)
-    std::cout << file << ": format version " << show->fileVersion << ", migrated to version " << kShowFormatVersion
+  for (const CueList& l : show.cueLists) cues += l.cues.size();
+  std::cout << file << ": valid (" << show.fixtures.size() << " fixtures, " << show.groups.size() << " groups, "
+            << show.palettes.size() << " palettes, " << show.cueLists.size() << " cue lists, " << cues << " cues)\n";
+  if (show.fileVersion < kShowFormatVersion)
+    std::cout << file << ": format version " << show.fileVersion << ", migrated to version " << kShowFormatVersion
               << " as it was read (version 2 adds groups and palettes; nothing else changes); saving writes version "
               << kShowFormatVersion << "\n";
-  if (show) warnAboutHazers(*show);
-  if (!saveAs.empty() && show) {
+  warnAboutHazers(show);
+  if (!saveAs.empty()) {
     SaveOptions options;
     options.keepBackup = false;
-    if (Status saved = saveShow(*show, saveAs, options); !saved) {
+    if (Status saved = saveShow(show, saveAs, options); !saved) {
       std::cerr << saved.error().str() << "\n";
-      return 1;
+      return kExitBadInput;
     }
     std::cout << saveAs << ": written (format version " << kShowFormatVersion << ")\n";
   }

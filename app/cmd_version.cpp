@@ -20,7 +20,7 @@ namespace haze {
 int runVersion(const Args& args) {
   if (!args.empty()) {
     std::fprintf(stderr, "haze --version: takes no arguments (got '%s')\n", args.front().c_str());
-    return 2;
+    return kExitUsage;
   }
   std::printf("haze %s (git %s)\n", HAZE_VERSION, HAZE_GIT_DESCRIBE);
   auto context = createHeadlessContext();

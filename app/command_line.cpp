@@ -25,8 +25,8 @@ bool wholeNumber(const std::string& s, double& out) {
 
 }  // namespace
 
-CommandLine::CommandLine(std::string command, std::string usage, int errorStatus)
-    : command_(std::move(command)), usage_(std::move(usage)), errorStatus_(errorStatus) {}
+CommandLine::CommandLine(std::string command, std::string usage)
+    : command_(std::move(command)), usage_(std::move(usage)) {}
 
 CommandLine& CommandLine::flag(const std::string& names, bool& dst) {
   options_.push_back({splitNames(names), false, "", [&dst](const std::string&) { return dst = true; }});
@@ -93,7 +93,19 @@ const CommandLine::Option* CommandLine::find(const std::string& name) const {
 
 int CommandLine::fail(const std::string& line) const {
   std::fprintf(stderr, "%s: %s\n", command_.c_str(), line.c_str());
-  return errorStatus_;
+  return kExitBadInput;
+}
+
+int CommandLine::usage(const std::string& line) const {
+  std::fprintf(stderr, "%s: %s\n", command_.c_str(), line.c_str());
+  return kExitUsage;
+}
+
+std::optional<CheckedShow> CommandLine::readShow(const std::string& file) const {
+  CheckedShow checked = checkShowFile(file);
+  for (const Error& e : checked.problems) fail(e.str());
+  if (!checked.problems.empty()) return std::nullopt;
+  return checked;
 }
 
 std::optional<int> CommandLine::parse(const Args& args) const {
@@ -109,20 +121,20 @@ std::optional<int> CommandLine::parse(const Args& args) const {
         o->set("");
         continue;
       }
-      if (i + 1 >= args.size() || !o->set(args[i + 1])) return fail(a + " needs " + o->need);
+      if (i + 1 >= args.size() || !o->set(args[i + 1])) return usage(a + " needs " + o->need);
       ++i;
       continue;
     }
-    if (a.size() > 1 && a[0] == '-') return fail("unknown option '" + a + "' (see " + command_ + " --help)");
+    if (a.size() > 1 && a[0] == '-') return usage("unknown option '" + a + "' (see " + command_ + " --help)");
     if (nextPositional >= positionals_.size()) {
       const std::string what = positionals_.empty() ? "argument" : positionals_.back().what;
-      return fail("unexpected argument '" + a + "' (one " + what + " at a time)");
+      return usage("unexpected argument '" + a + "' (one " + what + " at a time)");
     }
     *positionals_[nextPositional++].dst = a;
   }
   for (size_t k = nextPositional; k < positionals_.size(); ++k)
     if (positionals_[k].required)
-      return fail("no " + positionals_[k].what + " given; " + usage_.substr(0, usage_.find('\n')));
+      return usage("no " + positionals_[k].what + " given; " + usage_.substr(0, usage_.find('\n')));
   return std::nullopt;
 }
 

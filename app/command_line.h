@@ -1,6 +1,6 @@
 // The subcommands' command lines, read one way: named options (flags, text, a choice, numbers in
 // a range), positional arguments, --help. A mistake is one line on stderr, "haze CMD: what",
-// naming the option and what it needs, and the command exits with its error status.
+// naming the option and what it needs, and the command exits kExitUsage (app/commands.h).
 #pragma once
 
 #include <functional>
@@ -9,13 +9,14 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "shows/show_validate.h"
 
 namespace haze {
 
 class CommandLine {
  public:
   // `command` as in "haze render"; `usage` is printed as it is for --help / -h.
-  CommandLine(std::string command, std::string usage, int errorStatus = 1);
+  CommandLine(std::string command, std::string usage);
 
   // `names` is one name or several separated by '|' ("-o|--output").
   CommandLine& flag(const std::string& names, bool& dst);
@@ -30,10 +31,15 @@ class CommandLine {
   // is an error, a second of the last kind is too.
   CommandLine& positional(std::string& dst, const std::string& what, bool required = true);
 
-  // nullopt: go on with the command. A value: return it (0 after --help, else the error status).
+  // nullopt: go on with the command. A value: return it (0 after --help, else kExitUsage).
   std::optional<int> parse(const Args& args) const;
-  // "haze CMD: line" on stderr; returns the error status.
+  // "haze CMD: line" on stderr; returns kExitBadInput (a file, a show, an output that failed).
   int fail(const std::string& line) const;
+  // "haze CMD: line" on stderr; returns kExitUsage (options that do not go together).
+  int usage(const std::string& line) const;
+  // The show SHOW as `haze validate` checks it (shows/show_validate.h): every problem printed as
+  // "haze CMD: <validate's line>" and nullopt, or the valid show with its profiles.
+  std::optional<CheckedShow> readShow(const std::string& file) const;
 
  private:
   struct Option {
@@ -50,7 +56,6 @@ class CommandLine {
   const Option* find(const std::string& name) const;
 
   std::string command_, usage_;
-  int errorStatus_;
   std::vector<Option> options_;
   std::vector<Positional> positionals_;
 };

@@ -9,6 +9,14 @@ namespace haze {
 
 using Args = std::vector<std::string>;  // the words after the subcommand
 
+// Every command's exit status (listed in `haze --help`): 0 done; 1 bad input (a file, a show that
+// `haze validate` refuses, a device, an output that cannot be written); 2 a usage error (an unknown
+// command or option, a bad option value, options that do not go together, a missing argument).
+// `haze compare` adds 3 for an error above --max-error.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitBadInput = 1;
+inline constexpr int kExitUsage = 2;
+
 int runRender(const Args& args);        // app/cmd_render.cpp
 int runFixture(const Args& args);       // app/cmd_fixture.cpp   (haze fixture info FILE --json)
 int runState(const Args& args);         // app/cmd_state.cpp     (haze state SHOW --cue N ...)

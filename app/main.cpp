@@ -11,22 +11,34 @@ namespace {
 constexpr const char* kHelp =
     "haze: stage-lighting previsualization\n"
     "  haze                                 GUI on the bundled demo show\n"
-    "  haze open SHOW [--cue N] [--select ID]... [--tab T] [--quality Q] [--help-window]\n"
-    "                 [--screenshot OUT.png --frames N] [--artnet] [--sacn] [--bind ADDR]   GUI on a show\n"
-    "  haze render SHOW [--cue N] [--at S] [--camera NAME] [--width W --height H]\n"
-    "                   [--quality draft|default|high|reference] [--exposure EV]\n"
-    "                   [--exposure-mode auto|manual] [--bloom F] -o OUT.(png|pfm)\n"
-    "  haze render SHOW --all-cues -o DIR/  one image per cue\n"
-    "  haze state SHOW --cue N [--at S] [--list NAME] --json\n"
-    "  haze validate SHOW\n"
+    "  haze open SHOW [--cue N] [--select ID]... [--tab T] [--quality Q] [--exposure EV]\n"
+    "                 [--exposure-mode auto|manual] [--help-window] [--screenshot OUT.png --frames N]\n"
+    "                 [--artnet] [--sacn] [--bind ADDR]                 the GUI on a show\n"
+    "  haze render SHOW [--cue N | --all-cues | --timecode hh:mm:ss:ff] [--at S] [--list NAME]\n"
+    "                   [--camera NAME] [--width W --height H] [--quality draft|default|high|reference]\n"
+    "                   [--exposure EV] [--exposure-mode auto|manual|per-frame] [--bloom F]\n"
+    "                   -o OUT.(png|pfm|exr) | -o DIR/ (with --all-cues)     stills\n"
+    "  haze render SHOW --video OUT.mp4|OUT-%05d.png [--from CUE] [--to CUE] [--fps N] [--hold S]\n"
+    "                   [--duration S] [--caption] [--timeline FILE.json | --timecode hh:mm:ss:ff]\n"
+    "  haze render SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] -o OUT\n"
+    "  haze state SHOW --cue N [--at S] [--list NAME] [--follow] [--json]   every fixture's state\n"
+    "  haze state SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] [--json]\n"
+    "  haze validate SHOW [--save-as OUT]   every problem of a show; --save-as writes the newest format\n"
     "  haze import-mvr FILE.mvr -o SHOW.haze.json [--force] [--no-venue] [--verbose]\n"
-    "  haze fixture info FILE --json        native profile, .ies, .ldt or .gdtf\n"
-    "  haze bench [--fixtures N] [--width W --height H] [--quality Q] [--compare-reference] [--study] --json\n"
-    "  haze compare IMAGE.pfm REFERENCE.pfm [--threshold F] [--max-error E] [--json]   accuracy metric\n"
-    "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--duration S] [--state-json OUT] [--render OUT.png]\n"
+    "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--artnet-port P] [--sacn-port P] [--multicast]\n"
+    "                 [--duration S] [--on-loss hold|blackout] [--state-json OUT] [--render OUT.png]\n"
+    "                 [--osc PORT] [--timecode] [--mtc [--mtc-from C:P]] [--cue-list NAME]\n"
+    "                 [--record-cue N [--label L]] [--no-sync] [--no-preview]   DMX in from a console\n"
     "  haze sheet SHOW -o SHEET.pdf [--list NAME] [--camera NAME]... [--quality Q]   the review sheet\n"
+    "  haze fixture info FILE [--json]      native profile, .ies, .ldt or .gdtf\n"
+    "  haze bench [--fixtures N | --show SHOW [--cue N]] [--width W --height H] [--quality Q] [--json]\n"
+    "  haze compare IMAGE.pfm REFERENCE.pfm [--threshold F] [--max-error E] [--json]   accuracy metric\n"
     "  haze --version                       version, git commit, the OpenGL the renderer gets\n"
-    "Each subcommand takes --help.\n";
+    "Each command takes --help for all its options.\n"
+    "Every command that reads a show checks it as haze validate does and refuses it with the same lines.\n"
+    "Exit status, every command: 0 done; 1 bad input (a file, a show validate refuses, a device, an\n"
+    "output that cannot be written); 2 a usage error (an unknown command or option, a bad option value,\n"
+    "options that do not go together, a missing argument); haze compare: 3 over --max-error.\n";
 
 #ifndef HAZE_HAS_GUI
 int noGui() {
@@ -67,5 +79,5 @@ int main(int argc, char** argv) {
     return 0;
   }
   std::fprintf(stderr, "haze: unknown command '%s' (try haze --help)\n", cmd.c_str());
-  return 2;
+  return haze::kExitUsage;
 }

@@ -105,7 +105,9 @@ ImageRGB RenderSession::radiance() const { return referenceImage_ ? *referenceIm
 
 std::vector<unsigned char> RenderSession::display(const Show& show) {
   const ExposureChoice choice = exposureChoiceFor(show, options_);
-  const float metered = choice.mode == ExposureMode::Auto ? renderer_->meter().ev : 0.0f;
+  const float metered = choice.mode != ExposureMode::Auto ? 0.0f
+                       : lockedMeteredEv_                 ? *lockedMeteredEv_
+                                                          : renderer_->meter().ev;
   lastExposureEv_ = exposureEvFor(choice, metered);
   return renderer_->readDisplay({.exposureEv = lastExposureEv_, .bloom = options_.bloom});
 }

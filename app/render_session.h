@@ -51,6 +51,11 @@ class RenderSession {
                       const std::filesystem::path& out, const std::string& comment = {}, double clockS = 0.0);
   // The absolute EV of the last PNG (the metered one plus the offset, under auto).
   float lastExposureEv() const { return lastExposureEv_; }
+  // Under auto exposure, display() (and PNGs) use this metered EV instead of metering each image:
+  // one exposure for a whole video or cue list (app/exposure_lock.h). nullopt: meter each image.
+  void lockMeteredEv(std::optional<float> meteredEv) { lockedMeteredEv_ = meteredEv; }
+  // What the meter says of the image drawn last, as display() would meter it.
+  float meteredEv() { return renderer_->meter().ev; }
   Renderer& renderer() { return *renderer_; }
   const Venue& venue() const { return venue_; }
 
@@ -60,6 +65,7 @@ class RenderSession {
   Venue venue_;
   std::unique_ptr<Renderer> renderer_;
   float lastExposureEv_ = 0.0f;
+  std::optional<float> lockedMeteredEv_;
   std::optional<ImageRGB> referenceImage_;  // the last draw's, under Quality::Reference
   AtmosphereField atmosphere_;
   HazerSchedule hazers_;

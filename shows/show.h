@@ -230,6 +230,8 @@ struct FileStamp {
 // Version 2 added groups and palettes; a version-1 file is read as version 2 unchanged.
 inline constexpr int kShowFormatVersion = 2;
 
+inline constexpr double kMaxDefaultFadeS = 3600.0;
+
 struct Show {
   std::filesystem::path file;        // where it was loaded from (paths inside are relative to it)
   std::optional<FileStamp> stamp;    // the file as loaded or last saved; empty for a new show
@@ -242,6 +244,8 @@ struct Show {
   std::vector<GroupDef> groups;
   std::vector<PaletteDef> palettes;
   std::vector<CueList> cueLists;
+  // "default_fade": the fade in seconds a newly recorded cue gets (record cue, the GUI's Record).
+  double defaultFadeS = 0.0;
 
   const FixtureDef* findFixture(int id) const;
   const GroupDef* findGroup(const std::string& name) const;

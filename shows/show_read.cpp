@@ -1090,7 +1090,9 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
           r.problem(std::string("/") + key, std::string("\"") + key + "\" needs format version 2; this file says " +
                                                 std::to_string(version) + " (set \"version\": 2)");
     r.onlyKeys(root, "", {"format", "version", "venue", "atmosphere", "cameras", "profiles", "fixtures", "groups",
-                          "palettes", "cue_lists"});
+                          "palettes", "cue_lists", "default_fade"});
+    if (const json* fade = r.member(root, "", "default_fade", false))
+      r.number(*fade, "/default_fade", 0.0, kMaxDefaultFadeS, "a fade in seconds (0..3600)", out.show.defaultFadeS);
     readVenue(r, root, out.show);
     readAtmosphere(r, root, out.show);
     readCameras(r, root, out.show);

@@ -321,20 +321,30 @@ std::vector<Error> validateShow(const Show& show, const ProfileSet& profiles) {
   return std::move(c.problems);
 }
 
-std::vector<Error> validateShowFile(const std::filesystem::path& file) {
+namespace {
+CheckedShow checkShowText(std::string_view text, const std::filesystem::path& file) {
+  ShowParse parse = parseShowText(text, file);
+  CheckedShow out{.show = std::move(parse.show), .profiles = {}, .problems = std::move(parse.problems)};
+  ProfileLoad load = loadProfilesAll(out.show);
+  out.problems.insert(out.problems.end(), load.problems.begin(), load.problems.end());
+  std::vector<Error> cross = validateShow(out.show, load.profiles);
+  out.problems.insert(out.problems.end(), cross.begin(), cross.end());
+  out.profiles = std::move(load.profiles);
+  out.show.stamp = stampOf(text);
+  return out;
+}
+}  // namespace
+
+CheckedShow checkShowFile(const std::filesystem::path& file) {
   auto bytes = readShowBytes(file);
-  if (!bytes) return {bytes.error()};
-  return validateShowText(*bytes, file);
+  if (!bytes) return CheckedShow{.show = {}, .profiles = {}, .problems = {bytes.error()}};
+  return checkShowText(*bytes, file);
 }
 
+std::vector<Error> validateShowFile(const std::filesystem::path& file) { return checkShowFile(file).problems; }
+
 std::vector<Error> validateShowText(std::string_view text, const std::filesystem::path& file) {
-  ShowParse parse = parseShowText(text, file);
-  std::vector<Error> all = std::move(parse.problems);
-  ProfileLoad load = loadProfilesAll(parse.show);
-  all.insert(all.end(), load.problems.begin(), load.problems.end());
-  std::vector<Error> cross = validateShow(parse.show, load.profiles);
-  all.insert(all.end(), cross.begin(), cross.end());
-  return all;
+  return checkShowText(text, file).problems;
 }
 
 }  // namespace haze

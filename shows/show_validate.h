@@ -26,6 +26,16 @@ ProfileLoad loadProfilesAll(const Show& show);
 // failed to load, reported elsewhere) make the checks that need them skip quietly.
 std::vector<Error> validateShow(const Show& show, const ProfileSet& profiles);
 
+// A show read once and checked as `haze validate` checks it: the show and its profiles, usable
+// only when `problems` is empty. Every command that reads a show goes through this, so what
+// validate refuses every command refuses, with the same lines.
+struct CheckedShow {
+  Show show;
+  ProfileSet profiles;
+  std::vector<Error> problems;
+};
+CheckedShow checkShowFile(const std::filesystem::path& file);
+
 // All of it for one file: read, parse, load profiles, validate. Empty means valid.
 std::vector<Error> validateShowFile(const std::filesystem::path& file);
 // The same for show text that is not (yet) on disk; `file` names it and anchors its paths.

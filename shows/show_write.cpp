@@ -334,6 +334,7 @@ ojson showJson(const Show& s) {
     }
     lists.push_back(ojson{{"name", l.name}, {"cues", cues}});
   }
+  if (s.defaultFadeS > 0.0) root["default_fade"] = s.defaultFadeS;
   root["cue_lists"] = lists;
   return root;
 }

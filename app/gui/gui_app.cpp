@@ -432,6 +432,9 @@ int runGui(const Args& args) {
   Options opt;
   if (auto done = parseOptions(args, opt)) return *done;
 
+  // What `haze validate` refuses the GUI refuses too, with the same lines (app/command_line.h).
+  if (!CommandLine("haze open", kUsage).readShow(opt.show)) return kExitBadInput;
+
   Gui gui;
   auto opened = ShowDocument::open(opt.show);
   if (!opened) return fail(opened.error().str());

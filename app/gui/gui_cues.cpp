@@ -76,6 +76,9 @@ void drawCuesTab(Gui& gui) {
   if (ImGui::Button("BACK")) doc.back(now);
   ImGui::SameLine();
   if (ImGui::Button("GOTO") && gui.cueCursor) doc.gotoCue(*gui.cueCursor, now);
+  // The show's default fade (the command line's `default fade S`): what Record gives a new cue.
+  ImGui::SameLine();
+  ImGui::TextDisabled("new cues: fade %.1f s", doc.show().defaultFadeS);
   // Progress of the fade into the cue on stage: the delay shows as 0.
   const auto current = doc.currentCue();
   const double p = doc.fadeProgress(now);

@@ -4,6 +4,7 @@
 #include <cairo-pdf.h>
 #include <cairo.h>
 
+#include <algorithm>
 #include <cstring>
 #include <memory>
 
@@ -123,11 +124,13 @@ Status writeSheetPdf(const SheetDoc& doc, const std::filesystem::path& file) {
     page.text(L::kMargin, top + 52, cue.timing, 7, false, L::kThumbX - L::kMargin - 8);
     for (size_t c = 0; c < cue.thumbnails.size(); ++c)
       page.image(cue.thumbnails[c], L::thumbX(static_cast<int>(c)), L::thumbY(row), L::kThumbWidth, L::kThumbHeight);
-    const size_t shown = cue.changes.size() > static_cast<size_t>(L::kChangeLines) ? L::kChangeLines - 1 : cue.changes.size();
-    for (size_t k = 0; k < shown; ++k) page.text(changesX, top + 14 + 11 * k, cue.changes[k], 7, false, changesWidth);
-    if (shown < cue.changes.size())
-      page.text(changesX, top + 14 + 11 * shown, "... and " + std::to_string(cue.changes.size() - shown) + " more fixtures",
-                7, true, changesWidth);
+    // Every change is listed: past kChangeLines the lines close up and the type shrinks to fit
+    // the row, so the desk never reads "and more".
+    const size_t lines = cue.changes.size();
+    const double step = lines > static_cast<size_t>(L::kChangeLines) ? 11.0 * L::kChangeLines / static_cast<double>(lines) : 11.0;
+    const double size = std::min(7.0, step * 0.8);
+    for (size_t k = 0; k < lines; ++k)
+      page.text(changesX, top + 14 + step * static_cast<double>(k), cue.changes[k], size, false, changesWidth);
     if (cue.changes.empty()) page.text(changesX, top + 14, "no change", 7, false, changesWidth);
   }
 

@@ -19,7 +19,7 @@ struct SheetImage {
 struct SheetCue {
   std::string number, label, timing;  // timing: "fade 5 s, delay 0 s, follow -"
   std::vector<SheetImage> thumbnails;  // one per camera, in SheetDoc::cameras' order
-  std::vector<std::string> changes;    // "101 Spot SL: intensity 0.8, pan 30"
+  std::vector<std::string> changes;    // "11-20 Alpha Spot @ 70 %, palette Blue, gobo Spokes"
 };
 
 struct SheetPatchRow {
@@ -40,7 +40,7 @@ struct SheetLayout {
   static constexpr double kFirstRowY = 84, kRowHeight = 104;
   static constexpr double kThumbX = 176, kThumbWidth = 160, kThumbHeight = 90, kThumbGap = 8;
   static constexpr int kRowsPerPage = 4;
-  static constexpr int kChangeLines = 8;  // more are summarised as "... and N more"
+  static constexpr int kChangeLines = 8;  // at 7 pt; more are set closer and smaller to fit the row
   static constexpr int kPatchRowsPerPage = 40;
   // Top-left corner of cue row `row`'s thumbnail `camera` on its page (row % kRowsPerPage).
   static double thumbX(int camera) { return kThumbX + camera * (kThumbWidth + kThumbGap); }

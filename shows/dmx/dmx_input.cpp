@@ -1,6 +1,7 @@
 // DMX input: parse, count, merge, decode. Counters are data (per-reason maps) so tests and the
 // CLI can report exactly why packets were dropped.
 #include "shows/dmx/dmx_input.h"
+#include "shows/dmx/dmx_reach.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,16 +30,9 @@ StageState decodeStage(const Show& show, const ProfileSet& profiles,
   for (const FixtureDef& f : show.fixtures) {
     Attributes& a = state[f.id];
     if (!f.patch || f.patch->address < 1 || f.patch->address > 512) continue;
-    auto pit = profiles.find(f.profile);
-    if (pit == profiles.end() || !pit->second) continue;
-    const Profile& profile = *pit->second;
-    // By name; a fixture that names no mode takes the profile's first.
-    const DmxMode* mode = nullptr;
-    for (const DmxMode& m : profile.modes) {
-      if (m.name == f.mode || (f.mode.empty() && !mode)) mode = &m;
-      if (m.name == f.mode) break;
-    }
+    const DmxMode* mode = dmxModeOf(f, profiles);
     if (!mode) continue;
+    const Profile& profile = *profiles.at(f.profile);
     const DmxBuffer* levels = universeLevels(f.patch->universe);
     if (!levels) continue;
     const size_t start = static_cast<size_t>(f.patch->address - 1);
@@ -96,7 +90,11 @@ void DmxInput::submit(const DmxFrame& frame, double nowS) {
     case MergeVerdict::Accepted: countGood(nowS); break;
     case MergeVerdict::LateSequence: ++stats_.late; break;
     case MergeVerdict::Terminated: ++stats_.terminated; break;
-    case MergeVerdict::UnwatchedUniverse: ++stats_.unwatched; break;
+    case MergeVerdict::UnwatchedUniverse:
+      ++stats_.unwatched;
+      if (stats_.unwatchedUniverses.size() < DmxInputStats::kMaxUnwatchedNamed)
+        stats_.unwatchedUniverses.insert(frame.universe);
+      break;
     case MergeVerdict::SourcesExceeded: ++stats_.exceeded; break;
   }
 }

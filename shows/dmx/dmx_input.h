@@ -41,6 +41,8 @@ struct DmxInputStats {
   uint64_t late = 0;         // discarded by the sequence rule
   uint64_t terminated = 0;   // sACN Stream_Terminated packets
   uint64_t unwatched = 0;    // levels for a universe no fixture is patched on
+  std::set<int> unwatchedUniverses;  // which (the first kMaxUnwatchedNamed), for the warning
+  static constexpr size_t kMaxUnwatchedNamed = 64;
   uint64_t exceeded = 0;     // sources beyond the merger's (or the sync holder's) limits
   uint64_t syncPackets = 0;  // ArtSync and E1.31 synchronization packets
   uint64_t foreignArtSyncs = 0;  // of syncPackets: ArtSync from an address that sends no ArtDmx

@@ -3,11 +3,15 @@
 // done fails before anything changed.
 #include "shows/edit/command_run.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
 #include "shows/cue_number.h"
+#include "shows/id_ranges.h"
 #include "shows/edit/command_syntax.h"
+#include "shows/edit/edit_defaults.h"
 #include "shows/palettes.h"
 #include "shows/playback.h"
 
@@ -53,7 +57,88 @@ std::string describeValues(const ParsedCommand& c) {
   if (v.zoomDeg) o << sep << "zoom " << *v.zoomDeg, sep = ", ";
   if (v.iris) o << sep << "iris " << percent(*v.iris) << " %", sep = ", ";
   if (v.frost) o << sep << "frost " << percent(*v.frost) << " %", sep = ", ";
+  if (v.gateFocus) o << sep << "focus " << percent(*v.gateFocus) << " %", sep = ", ";
+  if (v.color) o << sep << "colour [" << v.color->r << ", " << v.color->g << ", " << v.color->b << "]", sep = ", ";
+  if (c.colorSlot) o << sep << "colour " << *c.colorSlot, sep = ", ";
+  if (v.ctoMired) o << sep << "cto " << *v.ctoMired << " mired", sep = ", ";
+  if (c.goboSlot) o << sep << "gobo " << *c.goboSlot, sep = ", ";
+  if (v.goboRotationDeg) o << sep << "gobo rotation " << *v.goboRotationDeg, sep = ", ";
+  if (v.goboSpinDegS) o << sep << "gobo spin " << *v.goboSpinDegS << " degrees/s", sep = ", ";
+  if (c.prismSlot) o << sep << "prism " << *c.prismSlot, sep = ", ";
+  if (v.prismRotationDeg) o << sep << "prism rotation " << *v.prismRotationDeg, sep = ", ";
+  if (v.prismSpinDegS) o << sep << "prism spin " << *v.prismSpinDegS << " degrees/s", sep = ", ";
+  if (v.shutter)
+    o << sep << (v.shutter->strobing() ? "strobe " + std::to_string(v.shutter->rateHz).substr(0, 5) + " Hz"
+                                       : std::string("shutter ") + shutterModeName(v.shutter->mode)),
+        sep = ", ";
   return o.str();
+}
+
+std::string lower(std::string s) {
+  for (char& ch : s) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return s;
+}
+
+// A slot of `slots` (names) as typed: its name in any case, or its number from 1; "open" is the
+// open slot whatever the wheel calls it first. -1: none.
+int slotIndex(const std::vector<std::string>& slots, const std::string& typed) {
+  for (size_t k = 0; k < slots.size(); ++k)
+    if (lower(slots[k]) == lower(typed)) return static_cast<int>(k);
+  if (!typed.empty() && std::all_of(typed.begin(), typed.end(), [](char ch) { return ch >= '0' && ch <= '9'; }) &&
+      typed.size() < 6) {
+    const int n = std::stoi(typed);
+    if (n >= 1 && static_cast<size_t>(n) <= slots.size()) return n - 1;
+  }
+  return -1;
+}
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string out;
+  for (size_t k = 0; k < names.size(); ++k) out += (k ? ", " : "") + std::to_string(k + 1) + " " + names[k];
+  return out.empty() ? "none" : out;
+}
+
+// The colour wheel slot, gobo and prism the line names, for one fixture from its profile.
+Status resolveSlots(const ShowDocument& doc, const ParsedCommand& c, int id, CueValues& v) {
+  if (!c.colorSlot && !c.goboSlot && !c.prismSlot) return Ok{};
+  const FixtureDef* f = doc.show().findFixture(id);
+  auto it = f ? doc.profiles().find(f->profile) : doc.profiles().end();
+  if (it == doc.profiles().end() || !it->second)
+    return Error{"", "fixture " + std::to_string(id), "its profile is not loaded; nothing was changed"};
+  const Profile& p = *it->second;
+  const std::string who = "fixture " + std::to_string(id) + " (" + (p.name.empty() ? f->profile : p.name) + ")";
+  if (c.colorSlot) {
+    std::vector<std::string> names;
+    if (!p.colorWheels.empty())
+      for (const WheelSlot& s : p.colorWheels.front().slots) names.push_back(s.name);
+    const int k = slotIndex(names, *c.colorSlot);
+    if (k < 0)
+      return Error{"", "color " + *c.colorSlot,
+                   who + " has no colour wheel slot " + *c.colorSlot + " (its slots: " + listed(names) +
+                       ") and it names no colour palette or colour; nothing was changed"};
+    const WheelSlot& slot = p.colorWheels.front().slots[static_cast<size_t>(k)];
+    v.color = slot.color ? *slot.color : glm::vec3(1.0f);
+  }
+  if (c.goboSlot) {
+    std::vector<std::string> names;
+    if (!p.goboWheels.empty())
+      for (const WheelSlot& s : p.goboWheels.front().slots) names.push_back(s.name);
+    const int k = lower(*c.goboSlot) == "open" && slotIndex(names, "open") < 0 ? -2 : slotIndex(names, *c.goboSlot);
+    if (k == -1)
+      return Error{"", "gobo " + *c.goboSlot, who + " has no gobo " + *c.goboSlot + " (its gobos: " + listed(names) +
+                                                  "); nothing was changed"};
+    v.gobo = k == -2 ? std::string("Open") : names[static_cast<size_t>(k)];
+  }
+  if (c.prismSlot) {
+    std::vector<std::string> names;
+    for (const PrismSpec& s : p.prisms) names.push_back(s.name);
+    const int k = lower(*c.prismSlot) == "open" ? -2 : slotIndex(names, *c.prismSlot);
+    if (k == -1)
+      return Error{"", "prism " + *c.prismSlot, who + " has no prism " + *c.prismSlot + " (its prisms: " +
+                                                    listed(names) + "); nothing was changed"};
+    v.prism = k == -2 ? std::string("Open") : names[static_cast<size_t>(k)];
+  }
+  return Ok{};
 }
 
 std::string fixtures(const std::vector<int>& ids) {
@@ -78,6 +163,7 @@ Result<std::string> setValues(ShowDocument& doc, const std::string& line, const 
       applyPalette(show, v, id, *p);
     }
     layValues(v, c.values);
+    if (Status s = resolveSlots(doc, c, id, v); !s) return s.error();
     values[id] = v;
   }
   Status s = doc.run(std::make_unique<CommandLineEdit>(line, setProgrammer(std::move(values))));
@@ -156,6 +242,34 @@ Result<std::string> groupOrPalette(ShowDocument& doc, const std::string& line, c
   return done;
 }
 
+std::string seconds(double s) {
+  std::ostringstream o;
+  o << s << " s";
+  return o.str();
+}
+
+// cue N time T delay D follow F, label cue N TEXT: one edit of an existing cue.
+Result<std::string> cueTimesOrLabel(ShowDocument& doc, const std::string& line, const ParsedCommand& c) {
+  const auto& lists = doc.show().cueLists;
+  const CueList* list = c.cueList < lists.size() ? &lists[c.cueList] : nullptr;
+  const std::string ref = (c.cueList > 0 ? std::to_string(c.cueList + 1) + "/" : "") + c.cueNumber;
+  auto at = list ? findCue(*list, c.cueNumber) : Result<size_t>(Error{"", "", "the show has no cues"});
+  if (!at) return Error{"", "cue " + ref, at.error().message};
+  const Cue& cue = list->cues[*at];
+  const std::string in = listWord(doc, c.cueList);
+  if (c.action == ParsedCommand::Action::LabelCue) {
+    Status s = doc.run(std::make_unique<CommandLineEdit>(line, labelCue(list->name, cue.number, c.name)));
+    if (!s) return s.error();
+    return "Cue " + cue.number + in + (c.name.empty() ? " has no label" : " is labelled \"" + c.name + "\"");
+  }
+  CueTimes t{.fadeS = c.fadeS.value_or(cue.fadeS), .delayS = c.delayS.value_or(cue.delayS),
+             .followS = c.followS.value_or(cue.followS)};
+  Status s = doc.run(std::make_unique<CommandLineEdit>(line, setCueTimes(list->name, cue.number, t)));
+  if (!s) return s.error();
+  return "Cue " + cue.number + in + ": fade " + seconds(t.fadeS) + ", delay " + seconds(t.delayS) + ", follow " +
+         (t.followS ? seconds(*t.followS) : std::string("off"));
+}
+
 std::string cueName(const CueList& list, size_t index) {
   const Cue& q = list.cues[index];
   return "cue " + q.number + (q.label.empty() ? "" : " (" + q.label + ")");
@@ -163,17 +277,7 @@ std::string cueName(const CueList& list, size_t index) {
 
 }  // namespace
 
-std::string describeIds(const std::vector<int>& ids) {
-  std::string s;
-  for (size_t k = 0; k < ids.size();) {
-    size_t run = k;
-    while (run + 1 < ids.size() && ids[run + 1] == ids[run] + 1) ++run;
-    s += (s.empty() ? "" : ", ") + std::to_string(ids[k]);
-    if (run > k) s += "-" + std::to_string(ids[run]);
-    k = run + 1;
-  }
-  return s;
-}
+std::string describeIds(const std::vector<int>& ids) { return idRanges(ids); }
 
 Result<std::string> runCommandLine(ShowDocument& doc, const std::string& typed, double nowS) {
   const std::string line = trimmed(typed);
@@ -205,6 +309,14 @@ Result<std::string> runCommandLine(ShowDocument& doc, const std::string& typed, 
     case ParsedCommand::Action::RecordGroup:
     case ParsedCommand::Action::DeleteGroup:
       return groupOrPalette(doc, line, c);
+    case ParsedCommand::Action::CueTimes:
+    case ParsedCommand::Action::LabelCue:
+      return cueTimesOrLabel(doc, line, c);
+    case ParsedCommand::Action::DefaultFade: {
+      Status s = doc.run(std::make_unique<CommandLineEdit>(line, setDefaultFade(*c.fadeS)));
+      if (!s) return s.error();
+      return "Cues recorded from now on fade in " + seconds(*c.fadeS);
+    }
     case ParsedCommand::Action::Go: {
       if (!doc.go(nowS)) return Error{"", "go", "there is no next cue"};
       const auto now = doc.currentCue();

@@ -59,7 +59,52 @@ constexpr AttributeWord kAttributes[] = {
     {"zoom", &CueValues::zoomDeg, 0.1, 179.0, 1.0, "degrees"},
     {"iris", &CueValues::iris, 0.0, 100.0, 0.01, "percent"},
     {"frost", &CueValues::frost, 0.0, 100.0, 0.01, "percent"},
+    {"focus", &CueValues::gateFocus, 0.0, 100.0, 0.01, "percent"},
+    {"cto", &CueValues::ctoMired, -500.0, 500.0, 1.0, "mired"},
 };
+
+// The words after which a number may be negative ("gobo rotation -45"), besides the attributes.
+// (Times are never negative: keeping the sign gives the range error rather than "expected seconds".)
+bool takesSignedNumber(const std::string& word) {
+  return word == "rotation" || word == "spin" || word == "time" || word == "delay" || word == "follow" || word == "fade";
+}
+
+// Named colours for `color NAME`, as sRGB like a hex code: the gel colours a designer asks for.
+struct NamedColor {
+  const char* name;
+  unsigned hex;
+};
+constexpr NamedColor kNamedColors[] = {
+    {"white", 0xffffff}, {"red", 0xff0000},     {"green", 0x00ff00},    {"blue", 0x0000ff},
+    {"cyan", 0x00ffff},  {"magenta", 0xff00ff}, {"yellow", 0xffff00},   {"amber", 0xffbf00},
+    {"orange", 0xff8000}, {"pink", 0xff80c0},   {"lavender", 0xb080ff}, {"violet", 0x8000ff},
+    {"congo", 0x4000c0}, {"straw", 0xfff0a0},   {"steel", 0xc0d8ff},
+};
+
+float srgbToLinear(unsigned byte) {
+  const double c = byte / 255.0;
+  return static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+}
+
+glm::vec3 linearFromHex(unsigned hex) {
+  return {srgbToLinear((hex >> 16) & 0xff), srgbToLinear((hex >> 8) & 0xff), srgbToLinear(hex & 0xff)};
+}
+
+// "#ff8800" (or "ff8800" after a '#' word) -> 0xff8800.
+std::optional<unsigned> hexColor(const std::string& text) {
+  const std::string digits = !text.empty() && text[0] == '#' ? text.substr(1) : text;
+  if (digits.size() != 6) return std::nullopt;
+  unsigned v = 0;
+  for (char c : digits) {
+    const int d = std::isdigit(static_cast<unsigned char>(c)) ? c - '0'
+                  : (c >= 'a' && c <= 'f')                    ? c - 'a' + 10
+                  : (c >= 'A' && c <= 'F')                    ? c - 'A' + 10
+                                                              : -1;
+    if (d < 0) return std::nullopt;
+    v = v * 16 + static_cast<unsigned>(d);
+  }
+  return v;
+}
 
 const AttributeWord* attributeNamed(const std::string& word) {
   for (const AttributeWord& a : kAttributes)
@@ -70,6 +115,7 @@ const AttributeWord* attributeNamed(const std::string& word) {
 std::vector<std::string> settingWords() {
   std::vector<std::string> s = {"@", "palette"};
   for (const AttributeWord& a : kAttributes) s.push_back(a.name);
+  for (const char* w : {"color", "colour", "gobo", "prism", "shutter", "strobe"}) s.push_back(w);
   return s;
 }
 
@@ -84,7 +130,7 @@ class Parser {
   Result<ParsedCommand> line() {
     ParsedCommand c;
     if (atEnd()) {
-      std::vector<std::string> start = {"group", "record", "update", "delete", "cue", "go", "clear"};
+      std::vector<std::string> start = {"group", "record", "update", "delete", "cue", "go", "clear", "label", "default"};
       for (const std::string& s : settingWords()) start.push_back(s);
       offer(start, "a fixture id");
       return c;
@@ -95,9 +141,12 @@ class Parser {
       ++i_;
       if (Status s = cueRef(true, c); !s) return s.error();
       c.action = ParsedCommand::Action::GotoCue;
+      if (Status s = cueTimes(c); !s) return s.error();
       if (Status s = end("the cue number"); !s) return s.error();
       return c;
     }
+    if (kw == "label") return labelCue(c);
+    if (kw == "default") return defaultFade(c);
     if (kw == "go" || kw == "clear") {
       ++i_;
       c.action = kw == "go" ? ParsedCommand::Action::Go : ParsedCommand::Action::Clear;
@@ -237,6 +286,152 @@ class Parser {
     return expected(what, after);
   }
 
+  // After `cue CUE`: ('time' | 'delay' | 'follow') SECONDS ..., 'follow off'; none: a GOTO.
+  Status cueTimes(ParsedCommand& c) {
+    bool any = false;
+    while (true) {
+      offer({"time", "delay", "follow"}, "");
+      if (atEnd()) return Ok{};
+      const std::string kw = word();
+      if (kw != "time" && kw != "delay" && kw != "follow") {
+        if (!any) return Ok{};  // end() names what was expected
+        return expected("'time', 'delay', 'follow' or the end of the line", previous());
+      }
+      ++i_;
+      if (kw == "follow") offer({"off"}, "seconds");
+      else offer({}, "seconds");
+      if (kw == "follow" && !atEnd() && word() == "off") {
+        c.followS = std::optional<double>();
+      } else {
+        const auto typed = atEnd() ? std::nullopt : numberWord(w_[i_]);
+        if (!typed) return expected(kw == "follow" ? "seconds or 'off'" : "seconds", "'" + kw + "'");
+        const double v = *typed;
+        if (v < 0.0 || v > 3600.0) return unknown(kw + " takes 0..3600 seconds, not " + w_[i_].text);
+        if (kw == "time") c.fadeS = v;
+        else if (kw == "delay") c.delayS = v;
+        else c.followS.emplace(v);
+      }
+      ++i_;
+      any = true;
+      c.action = ParsedCommand::Action::CueTimes;
+    }
+  }
+
+  // label cue CUE TEXT: the rest of the line (quoted or not) is the label; "" clears it.
+  Result<ParsedCommand> labelCue(ParsedCommand& c) {
+    ++i_;
+    if (Status s = keyword("cue", "'label'"); !s) return s.error();
+    if (Status s = cueRef(true, c); !s) return s.error();
+    offer({}, "the label");
+    if (atEnd()) return expected("the label (\"\" clears it)", "the cue number");
+    for (; !atEnd(); ++i_) c.name += (c.name.empty() ? "" : " ") + w_[i_].text;
+    c.action = ParsedCommand::Action::LabelCue;
+    return c;
+  }
+
+  // default fade SECONDS: the fade every cue recorded from now on gets (Show::defaultFadeS).
+  Result<ParsedCommand> defaultFade(ParsedCommand& c) {
+    ++i_;
+    if (Status s = keyword("fade", "'default'"); !s) return s.error();
+    offer({}, "seconds");
+    const auto v = atEnd() ? std::nullopt : numberWord(w_[i_]);
+    if (!v) return expected("seconds", "'fade'");
+    if (*v < 0.0 || *v > 3600.0) return unknown("a default fade takes 0..3600 seconds, not " + w_[i_].text);
+    c.fadeS = *v;
+    ++i_;
+    c.action = ParsedCommand::Action::DefaultFade;
+    if (Status s = end("the seconds"); !s) return s.error();
+    return c;
+  }
+
+  // A number after `what`, in min..max.
+  Result<float> numberIn(const std::string& what, double lo, double hi, const std::string& unit) {
+    offer({}, "a number in " + unit);
+    const auto v = atEnd() ? std::nullopt : numberWord(w_[i_]);
+    if (!v) return expected("a number (" + unit + ")", "'" + what + "'");
+    if (*v < lo || *v > hi) return unknown(what + " takes " + trim(lo) + ".." + trim(hi) + " " + unit + ", not " + w_[i_].text);
+    ++i_;
+    return static_cast<float>(*v);
+  }
+
+  // color (#RRGGBB | PALETTE | NAMED COLOUR | SLOT): a colour palette by name comes first, then
+  // the named colours, then the fixture's colour wheel (checked when the line runs).
+  Status color(ParsedCommand& c) {
+    std::vector<std::string> names;
+    for (const PaletteDef& p : show_.palettes)
+      if (p.kind == PaletteKind::Color || p.kind == PaletteKind::All) names.push_back(quoteIfSpaced(p.name));
+    for (const NamedColor& n : kNamedColors) names.push_back(n.name);
+    offer(names, "#RRGGBB, a colour palette, a colour name or a colour wheel slot");
+    if (atEnd()) return expected("#RRGGBB, a colour palette, a colour name or a colour wheel slot", previous());
+    const std::string typed = w_[i_].text;
+    if (!typed.empty() && typed[0] == '#') {
+      const auto hex = hexColor(typed);
+      if (!hex) return unknown("a colour code is # and six hex digits, as #ff8800; not '" + typed + "'");
+      c.values.color = linearFromHex(*hex);
+      ++i_;
+      return Ok{};
+    }
+    for (const PaletteDef& p : show_.palettes)
+      if ((p.kind == PaletteKind::Color || p.kind == PaletteKind::All) && lower(p.name) == lower(typed)) {
+        c.palettes.push_back(p.name);
+        ++i_;
+        return Ok{};
+      }
+    for (const NamedColor& n : kNamedColors)
+      if (lower(typed) == n.name) {
+        c.values.color = linearFromHex(n.hex);
+        ++i_;
+        return Ok{};
+      }
+    c.colorSlot = typed;
+    ++i_;
+    return Ok{};
+  }
+
+  // gobo|prism (rotation DEGREES | spin DEGREES_PER_S | SLOT)
+  Status wheel(const std::string& kw, ParsedCommand& c) {
+    offer({"rotation", "spin", "open"}, "a " + kw + " name or number");
+    if (atEnd()) return expected("a " + kw + " name or number, 'rotation' or 'spin'", "'" + kw + "'");
+    const std::string sub = word();
+    const bool gobo = kw == "gobo";
+    if (sub == "rotation" || sub == "spin") {
+      ++i_;
+      const bool spin = sub == "spin";
+      auto v = spin ? numberIn(kw + " spin", -36000.0, 36000.0, "degrees per second")
+                    : numberIn(kw + " rotation", -1e6, 1e6, "degrees");
+      if (!v) return v.error();
+      if (gobo) (spin ? c.values.goboSpinDegS : c.values.goboRotationDeg) = *v;
+      else (spin ? c.values.prismSpinDegS : c.values.prismRotationDeg) = *v;
+      return Ok{};
+    }
+    (gobo ? c.goboSlot : c.prismSlot) = w_[i_].text;
+    ++i_;
+    return Ok{};
+  }
+
+  // shutter (open | closed)  |  strobe (HZ | off)
+  Status shutter(const std::string& kw, ParsedCommand& c) {
+    if (kw == "shutter") {
+      offer({"open", "closed"}, "'open' or 'closed'");
+      if (!atEnd() && (word() == "open" || word() == "closed")) {
+        c.values.shutter = Shutter{.mode = word() == "open" ? ShutterMode::Open : ShutterMode::Closed};
+        ++i_;
+        return Ok{};
+      }
+      return expected("'open' or 'closed'", "'shutter'");
+    }
+    offer({"off"}, "flashes per second");
+    if (!atEnd() && word() == "off") {
+      c.values.shutter = Shutter{};
+      ++i_;
+      return Ok{};
+    }
+    auto hz = numberIn("strobe", kMinStrobeHz, kMaxStrobeHz, "Hz");
+    if (!hz) return hz.error();
+    c.values.shutter = Shutter{.mode = ShutterMode::Strobe, .rateHz = *hz, .duty = 0.5f};
+    return Ok{};
+  }
+
   // selection := term (('+' | '-') term)*
   Result<std::vector<int>> selection() {
     auto first = term("");
@@ -370,6 +565,15 @@ class Parser {
         auto p = name("palette", "'palette'");
         if (!p) return p.error();
         c.palettes.push_back(show_.palettes[*p].name);
+      } else if (kw == "color" || kw == "colour") {
+        ++i_;
+        if (Status s = color(c); !s) return s;
+      } else if (kw == "gobo" || kw == "prism") {
+        ++i_;
+        if (Status s = wheel(kw, c); !s) return s;
+      } else if (kw == "shutter" || kw == "strobe") {
+        ++i_;
+        if (Status s = shutter(kw, c); !s) return s;
       } else {
         std::string what = c.selection ? "'+', '-', " : "a fixture id, 'group', ";
         if (c.selection && lastTermWasId_ && !any) what += "'thru', ";
@@ -453,7 +657,8 @@ std::vector<CommandWord> splitSelectionMinus(std::vector<CommandWord> words) {
   std::vector<CommandWord> out;
   for (size_t k = 0; k < words.size(); ++k) {
     const CommandWord& w = words[k];
-    const bool afterAttribute = k > 0 && !words[k - 1].quoted && attributeNamed(lower(words[k - 1].text));
+    const bool afterAttribute = k > 0 && !words[k - 1].quoted &&
+                                (attributeNamed(lower(words[k - 1].text)) || takesSignedNumber(lower(words[k - 1].text)));
     if (!w.quoted && w.text.size() > 1 && w.text[0] == '-' && isDigit(w.text[1]) && w.text.find('.') == std::string::npos &&
         !afterAttribute && k > 0 && lower(words[k - 1].text) != "@") {
       out.push_back(CommandWord{"-", false, w.position});

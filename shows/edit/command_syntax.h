@@ -27,6 +27,9 @@ struct ParsedCommand {
     DeletePalette,  // delete palette NAME
     RecordGroup,    // record group NAME
     DeleteGroup,    // delete group NAME
+    CueTimes,       // cue N time T [delay D] [follow F|off]
+    LabelCue,       // label cue N "TEXT"
+    DefaultFade,    // default fade T: the fade of cues recorded from now on
   };
   Action action = Action::None;
   // The fixtures the line names, sorted; empty when the line names none (Set then uses the
@@ -41,6 +44,13 @@ struct ParsedCommand {
   // DeleteGroup: the existing one's name as in the show.
   std::string name;
   std::optional<PaletteKind> paletteKind;  // RecordPalette: the kind typed, if any
+  // Set: a colour wheel slot, gobo or prism as typed (its name, any case, or its number on the
+  // fixture's wheel from 1; "open" for the open slot), resolved per fixture when the line runs.
+  std::optional<std::string> colorSlot, goboSlot, prismSlot;
+  // CueTimes: the times typed (unset ones stay as they are); a follow of nullopt is "off".
+  // DefaultFade: fadeS. LabelCue: the label is in `name`.
+  std::optional<double> fadeS, delayS;
+  std::optional<std::optional<double>> followS;
 };
 
 // The line split into words: '@' and '+' are words of their own wherever they are written, a '-'

@@ -146,6 +146,7 @@ class RecordCue final : public EditCommand {
     Cue cue;
     cue.number = number;
     cue.label = r_.label;
+    cue.fadeS = t.show.defaultFadeS;  // the show's default cue time (edit_defaults.h)
     for (const auto& [id, p] : t.programmer.values) {
       auto b = before.find(id);
       if (b == before.end()) continue;  // not a fixture of the show

@@ -70,10 +70,10 @@ check "different sizes: exit 1 naming both (got $rc)" \
 rc=$(run "$tmp/notpfm.pfm" "$tmp/ref.pfm")
 check "not a PFM: exit 1 naming it (got $rc)" '[ "$rc" -eq 1 ] && one_error_line "notpfm.pfm"'
 rc=$(run "$tmp/ref.pfm")
-check "one file only: exit 1 (got $rc)" '[ "$rc" -eq 1 ] && one_error_line "REFERENCE"'
+check "one file only: a usage error, exit 2 (got $rc)" '[ "$rc" -eq 2 ] && one_error_line "REFERENCE"'
 rc=$(run "$tmp/ref.pfm" "$tmp/ref.pfm" --threshold 2)
-check "a threshold outside 0..1: exit 1 (got $rc)" '[ "$rc" -eq 1 ] && one_error_line "--threshold"'
+check "a threshold outside 0..1: a usage error, exit 2 (got $rc)" '[ "$rc" -eq 2 ] && one_error_line "--threshold"'
 rc=$(run "$tmp/ref.pfm" "$tmp/ref.pfm" --frobnicate)
-check "an unknown option: exit 1 (got $rc)" '[ "$rc" -eq 1 ] && one_error_line "--frobnicate"'
+check "an unknown option: a usage error, exit 2 (got $rc)" '[ "$rc" -eq 2 ] && one_error_line "--frobnicate"'
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -65,18 +65,18 @@ cmp -s "$tmp/v-00005.png" "$tmp/cue1.png" || fail "the frame cue 1 fired on is n
 cmp -s "$tmp/v-00004.png" "$tmp/cue1.png" && fail "the frame before cue 1 fired already shows it"
 
 # Bad input.
-bad() {
-  local want=$1 file=$2
-  shift 2
+bad() {  # exit status (2: a usage error, 1: bad input), the line's text, show, options
+  local status=$1 want=$2 file=$3
+  shift 3
   "$haze" render "$file" "$@" -o "$tmp/bad.png" >/dev/null 2>"$tmp/err"
   local rc=$?
-  [ "$rc" -eq 1 ] || fail "render $* exited $rc, expected 1"
+  [ "$rc" -eq "$status" ] || fail "render $* exited $rc, expected $status"
   grep -q "$want" "$tmp/err" || fail "render $*: no '$want' in: $(cat "$tmp/err")"
   [ "$(wc -l <"$tmp/err")" -le 2 ] || fail "render $*: more than a line or two of error"
 }
-bad "frames below 25" "$show" --timecode 00:00:01:25
-bad "frames below 30" "$show" --timecode 24:00:00:00 --timecode-rate 30
-bad "no --cue" "$show" --timecode 00:00:01:00 --cue 2
-bad "has no cue with a timecode" "$tmp/blank.haze.json" --timecode 00:00:01:00
+bad 2 "frames below 25" "$show" --timecode 00:00:01:25
+bad 2 "frames below 30" "$show" --timecode 24:00:00:00 --timecode-rate 30
+bad 2 "no --cue" "$show" --timecode 00:00:01:00 --cue 2
+bad 1 "has no cue with a timecode" "$tmp/blank.haze.json" --timecode 00:00:01:00
 [ -e "$tmp/bad.png" ] && fail "a refused render wrote a file"
 echo "PASS render_timecode"
