@@ -2,6 +2,8 @@
 // frost and shutter (numbers read from their description.xml by hand), their DMX values decode
 // into shutter modes and rates, and a synthetic fixture with framing blades and an oversized
 // prism imports with the blades and a clamped prism.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -216,7 +218,7 @@ std::string bladeFixture() {
 }
 
 TEST(GdtfOptics, ReadsFramingBladesAndClampsAPrismOfFortyFacets) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "haze_gdtf_optics";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("haze_gdtf_optics." + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   ASSERT_TRUE(test::writeZip(dir / "shaper.gdtf", {{"description.xml", bladeFixture()}}));
   auto g = loadGdtf(dir / "shaper.gdtf");
