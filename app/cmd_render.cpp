@@ -193,8 +193,10 @@ int runRender(const Args& args) {
     auto metered = meterCueList(**session, *show, *profiles, *cueList, from, to);
     if (!metered) return metered.error();
     (*session)->lockMeteredEv(metered->meteredEv);
-    std::fprintf(stderr, "haze render: exposure metered once, on cue %s (the brightest); --exposure-mode per-frame "
-                 "meters every image\n", cueList->cues[metered->cue].number.c_str());
+    // Said where progress is (a terminal, --progress): a script's stderr stays for errors.
+    if (progress || Progress::stderrIsTerminal())
+      std::fprintf(stderr, "haze render: exposure metered once, on cue %s (the brightest); --exposure-mode per-frame "
+                   "meters every image\n", cueList->cues[metered->cue].number.c_str());
     return Ok{};
   };
 

@@ -24,7 +24,7 @@ PY
 # Mean grey level (0..255) of each decoded frame, one a line.
 levels() {
   "$haze" render "$tmp/demo.haze.json" --video "$tmp/$1.mp4" --from 6 --to 6 --hold 1 --fps 10 \
-    --width 160 --height 90 --quality draft "${@:2}" >/dev/null 2>"$tmp/$1.err" || fail "render $1: $(cat "$tmp/$1.err")"
+    --width 160 --height 90 --quality draft --progress "${@:2}" >/dev/null 2>"$tmp/$1.err" || fail "render $1: $(cat "$tmp/$1.err")"
   ffmpeg -v error -i "$tmp/$1.mp4" -f rawvideo -pix_fmt gray - >"$tmp/$1.gray" || fail "ffmpeg could not decode $1"
   python3 - "$tmp/$1.gray" <<'PY'
 import sys

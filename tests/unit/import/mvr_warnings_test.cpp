@@ -40,13 +40,16 @@ TEST(MvrWarnings, DifferentSentencesStaySeparate) {
   EXPECT_TRUE(groupMvrWarnings({}).empty());
 }
 
-// The Capture export: its hundreds of warnings fold into a handful of lines, and the counts in
+// The Capture export: its warnings fold into a handful of lines, and the counts in
 // the folded lines add up to every warning.
 TEST(MvrWarnings, CaptureDemoShowFoldsIntoAFewLines) {
   test::TempDir dir("mvrwarn");
   auto r = importMvr(std::filesystem::path(HAZE_SHARED_DATA) / "gdtf" / "mvr" / "capture_demo_show.mvr", dir / "c.haze.json");
   ASSERT_TRUE(r.ok()) << r.error().str();
-  ASSERT_GT(r->warnings.size(), 100u);
+  // Its stub GDTFs' Dimmer1..n channels are read as dimmers (docs/live.md), so they no longer
+  // give a warning per channel; what is left still folds, and adds up.
+  ASSERT_GT(r->warnings.size(), 0u);
+  for (const std::string& w : r->warnings) EXPECT_EQ(w.find("'Dimmer"), std::string::npos) << w;
   const auto out = groupMvrWarnings(r->warnings);
   EXPECT_LE(out.size(), 10u);
   std::size_t total = 0;
