@@ -20,6 +20,7 @@ constexpr const char* kHelp =
     "  haze state SHOW --cue N [--at S] [--list NAME] --json\n"
     "  haze validate SHOW\n"
     "  haze import-mvr FILE.mvr -o SHOW.haze.json [--force] [--no-venue] [--verbose]\n"
+    "  haze export-mvr SHOW -o RIG.mvr [--force] [--focus-list NAME] [--focus-cue N]\n"
     "  haze fixture info FILE --json        native profile, .ies, .ldt or .gdtf\n"
     "  haze bench [--fixtures N] [--width W --height H] [--quality Q] [--compare-reference] [--study] --json\n"
     "  haze compare IMAGE.pfm REFERENCE.pfm [--threshold F] [--max-error E] [--json]   accuracy metric\n"
@@ -59,6 +60,7 @@ int main(int argc, char** argv) {
   if (cmd == "compare") return haze::runCompare(rest);
   if (cmd == "live") return haze::runLive(rest);
   if (cmd == "import-mvr") return haze::runImportMvr(rest);
+  if (cmd == "export-mvr") return haze::runExportMvr(rest);
   if (cmd == "open") return openGui(rest);
   if (cmd == "sheet") return haze::runSheet(rest);
   if (cmd == "--version" || cmd == "version") return haze::runVersion(rest);
