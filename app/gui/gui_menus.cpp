@@ -120,6 +120,7 @@ void drawMenuBar(Gui& gui) {
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem("Import MVR...", "Ctrl+I")) requestFileAction(gui, FileAction::ImportMvr);
+    if (ImGui::MenuItem("Export MVR...")) requestFileAction(gui, FileAction::ExportMvr);
     ImGui::Separator();
     if (ImGui::MenuItem("Save", "Ctrl+S")) saveCurrent(gui);
     if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) requestFileAction(gui, FileAction::SaveAs);
