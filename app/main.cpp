@@ -25,6 +25,7 @@ constexpr const char* kHelp =
     "  haze state SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] [--json]\n"
     "  haze validate SHOW [--save-as OUT]   every problem of a show; --save-as writes the newest format\n"
     "  haze import-mvr FILE.mvr -o SHOW.haze.json [--force] [--no-venue] [--verbose]\n"
+    "  haze export-mvr SHOW -o RIG.mvr [--force] [--focus-list NAME] [--focus-cue N]   the rig as MVR\n"
     "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--artnet-port P] [--sacn-port P] [--multicast]\n"
     "                 [--duration S] [--on-loss hold|blackout] [--state-json OUT] [--render OUT.png]\n"
     "                 [--osc PORT] [--timecode] [--mtc [--mtc-from C:P]] [--cue-list NAME]\n"
@@ -71,6 +72,7 @@ int main(int argc, char** argv) {
   if (cmd == "compare") return haze::runCompare(rest);
   if (cmd == "live") return haze::runLive(rest);
   if (cmd == "import-mvr") return haze::runImportMvr(rest);
+  if (cmd == "export-mvr") return haze::runExportMvr(rest);
   if (cmd == "open") return openGui(rest);
   if (cmd == "sheet") return haze::runSheet(rest);
   if (cmd == "--version" || cmd == "version") return haze::runVersion(rest);

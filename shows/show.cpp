@@ -2,6 +2,8 @@
 // inline object, loaded through fixtures/profile.h. Errors point at /profiles/NAME.
 #include "shows/show.h"
 
+#include <cctype>
+
 #include <nlohmann/json.hpp>
 
 #include "shows/show_json.h"
@@ -67,6 +69,16 @@ ProfileLoad loadProfilesAll(const Show& show) {
     out.profiles[name] = std::move(loaded.value());
   }
   return out;
+}
+
+bool isMvrUuid(const std::string& text) {
+  if (text.size() != 36) return false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const bool dash = i == 8 || i == 13 || i == 18 || i == 23;
+    if (dash != (text[i] == '-')) return false;
+    if (!dash && !std::isxdigit(static_cast<unsigned char>(text[i]))) return false;
+  }
+  return true;
 }
 
 Result<ProfileSet> loadProfiles(const Show& show) {

@@ -81,6 +81,9 @@ struct FixtureDef {
   glm::vec3 position{0.0f};
   glm::vec3 rotationDeg{0.0f};  // R = Rz * Ry * Rx
   std::optional<Patch> patch;
+  // The fixture's MVR uuid ("" = none yet): kept from an MVR import, made by the first MVR
+  // export, so that a CAD program or console matches the fixture across exchanges.
+  std::string mvrUuid;
 };
 
 // What a cue sets for one cell of a multi-cell fixture (docs/cells.md).
@@ -237,6 +240,9 @@ struct Show {
   std::optional<FileStamp> stamp;    // the file as loaded or last saved; empty for a new show
   int fileVersion = kShowFormatVersion;  // the format version the file had when read
   std::string venueGltf;             // relative to the show file; "" = no venue (an empty stage)
+  // The MVR file the show was imported from, kept beside it (relative to the show file; "" =
+  // none): an export writes its layers, classes, trusses, scene objects and geometry back out.
+  std::string mvrSource;
   AtmosphereDef atmosphere;
   std::vector<CameraDef> cameras;
   std::map<std::string, ProfileRef> profiles;
@@ -253,6 +259,9 @@ struct Show {
   const CueList* findCueList(const std::string& name) const;  // "" = the first list
   std::filesystem::path resolve(const std::string& relative) const;  // against file's folder
 };
+
+// "2e149740-6a41-bc43-bd59-8968781b11b9": 8-4-4-4-12 hexadecimal digits, either case (MVR's guid).
+bool isMvrUuid(const std::string& text);
 
 using ProfileSet = std::map<std::string, std::shared_ptr<const Profile>>;
 

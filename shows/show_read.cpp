@@ -229,6 +229,14 @@ void readVenue(Reader& r, const json& root, Show& show) {
   r.stringMember(*v, "/venue", "gltf", true, "the path of a glTF file", show.venueGltf, true);
 }
 
+void readMvrSource(Reader& r, const json& root, Show& show) {
+  const json* v = r.member(root, "", "mvr", false);
+  if (!v || v->is_null()) return;
+  if (!r.isObject(*v, "/mvr", "the MVR the show came from")) return;
+  r.onlyKeys(*v, "/mvr", {"source"});
+  r.stringMember(*v, "/mvr", "source", true, "the path of an .mvr file", show.mvrSource, true);
+}
+
 // atmosphere.density (docs/shows.md, "Density"). A grid too large to simulate is refused here,
 // with what it would need; hazers outside the venue are clamped when the field is made (the
 // venue's bounds are not known here).
@@ -478,13 +486,19 @@ void readFixtures(Reader& r, const json& root, Show& show) {
     const std::string p = "/fixtures/" + std::to_string(i);
     FixtureDef d;
     if (r.isObject(f, p, "a fixture")) {
-      r.onlyKeys(f, p, {"id", "name", "profile", "mode", "position", "rotation", "patch"});
+      r.onlyKeys(f, p, {"id", "name", "profile", "mode", "position", "rotation", "patch", "uuid"});
       if (const json* id = r.member(f, p, "id", true)) r.integer(*id, p + "/id", 1, INT_MAX, "a fixture id", d.id);
       r.stringMember(f, p, "name", false, "the fixture's name", d.name, false);
       r.stringMember(f, p, "profile", true, "the name of a profile in /profiles", d.profile, true);
       r.stringMember(f, p, "mode", false, "the name of a DMX mode of the profile", d.mode, true);
       r.vec3Member(f, p, "position", false, -kInf, kInf, "a position in metres", d.position);
       r.vec3Member(f, p, "rotation", false, -kInf, kInf, "a rotation in degrees", d.rotationDeg);
+      if (r.stringMember(f, p, "uuid", false, "an MVR uuid (8-4-4-4-12 hexadecimal digits)", d.mvrUuid, true) &&
+          !d.mvrUuid.empty() && !isMvrUuid(d.mvrUuid)) {
+        r.problem(p + "/uuid", "expected an MVR uuid (8-4-4-4-12 hexadecimal digits, e.g. "
+                               "\"2e149740-6a41-bc43-bd59-8968781b11b9\"), got \"" + d.mvrUuid.substr(0, 60) + "\"");
+        d.mvrUuid.clear();
+      }
       const json* patch = r.member(f, p, "patch", false);
       if (patch && !patch->is_null() && r.isObject(*patch, p + "/patch", "a DMX patch")) {
         r.onlyKeys(*patch, p + "/patch", {"universe", "address"});
@@ -1089,11 +1103,12 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
         if (root.contains(key))
           r.problem(std::string("/") + key, std::string("\"") + key + "\" needs format version 2; this file says " +
                                                 std::to_string(version) + " (set \"version\": 2)");
-    r.onlyKeys(root, "", {"format", "version", "venue", "atmosphere", "cameras", "profiles", "fixtures", "groups",
+    r.onlyKeys(root, "", {"format", "version", "venue", "mvr", "atmosphere", "cameras", "profiles", "fixtures", "groups",
                           "palettes", "cue_lists", "default_fade"});
     if (const json* fade = r.member(root, "", "default_fade", false))
       r.number(*fade, "/default_fade", 0.0, kMaxDefaultFadeS, "a fade in seconds (0..3600)", out.show.defaultFadeS);
     readVenue(r, root, out.show);
+    readMvrSource(r, root, out.show);
     readAtmosphere(r, root, out.show);
     readCameras(r, root, out.show);
     readProfiles(r, root, out.show);

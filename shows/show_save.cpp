@@ -45,6 +45,7 @@ Status saveShow(Show& show, const fs::path& file, const SaveOptions& options) {
   if (!show.file.empty() && fs::absolute(oldDir, ec).lexically_normal() != fs::absolute(newDir, ec).lexically_normal()) {
     moved = show;
     moved->venueGltf = rebase(show.venueGltf, oldDir, newDir);
+    moved->mvrSource = rebase(show.mvrSource, oldDir, newDir);
     for (auto& [name, ref] : moved->profiles)
       if (!ref.inlineObject) ref.path = rebase(ref.path, oldDir, newDir);
   }
@@ -53,6 +54,7 @@ Status saveShow(Show& show, const fs::path& file, const SaveOptions& options) {
   if (!written) return written;
   if (moved) {
     show.venueGltf = moved->venueGltf;
+    show.mvrSource = moved->mvrSource;
     show.profiles = std::move(moved->profiles);
   }
   show.file = file;

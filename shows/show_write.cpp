@@ -196,6 +196,7 @@ ojson showJson(const Show& s) {
   root["format"] = "haze-show";
   root["version"] = kShowFormatVersion;
   if (!s.venueGltf.empty()) root["venue"] = ojson{{"gltf", s.venueGltf}};
+  if (!s.mvrSource.empty()) root["mvr"] = ojson{{"source", s.mvrSource}};
   const AtmosphereDef& a = s.atmosphere;
   ojson at = ojson::object();
   at["scattering"] = tidy(a.scattering);
@@ -256,6 +257,7 @@ ojson showJson(const Show& s) {
     o["position"] = vec(f.position);
     o["rotation"] = vec(f.rotationDeg);
     if (f.patch) o["patch"] = ojson{{"universe", f.patch->universe}, {"address", f.patch->address}};
+    if (!f.mvrUuid.empty()) o["uuid"] = f.mvrUuid;
     fixtures.push_back(o);
   }
   root["fixtures"] = fixtures;

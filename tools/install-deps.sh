@@ -8,7 +8,7 @@ packages=(
   libglfw3-dev libimgui-dev libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libassimp-dev liblo-dev liblo-tools ola iproute2 libasound2-dev alsa-utils
   libopenexr-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libcairo2-dev
-  xvfb xdotool x11-utils imagemagick ffmpeg poppler-utils
+  xvfb xdotool x11-utils imagemagick ffmpeg poppler-utils libxml2-utils
 )
 # `make fuzz` (tools/fuzz.sh) asks for libFuzzer too: clang and its runtime.
 if [ "${1:-}" = "--fuzz" ]; then

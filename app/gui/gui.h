@@ -50,7 +50,7 @@ struct Orbit {
 };
 
 enum class Tool { Select, Place, Focus };
-enum class FileAction { None, New, Open, OpenPath, SaveAs, AddProfile, ImportMvr, Quit };
+enum class FileAction { None, New, Open, OpenPath, SaveAs, AddProfile, ImportMvr, ExportMvr, Quit };
 
 struct Rect {
   float x = 0, y = 0, w = 0, h = 0;

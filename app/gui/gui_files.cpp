@@ -1,4 +1,4 @@
-// Files: new, open (by path, or from the recent list), import MVR, save, save as, adding profile
+// Files: new, open (by path, or from the recent list), import and export MVR, save, save as, adding profile
 // files to the library, and the unsaved-changes guard in front of everything that would drop
 // the open show (new, open, quit, closing the window). Open, Import MVR and Add profile use the
 // desktop's file dialog (desktop_dialog.h) when there is one; Save as, and everything when there
@@ -11,6 +11,7 @@
 #include "app/gui/gui.h"
 #include "shows/edit/recent_files.h"
 #include "shows/dmx/udp_receiver.h"
+#include "shows/import/mvr_export.h"
 #include "shows/import/mvr_import.h"
 
 namespace haze {
@@ -58,6 +59,11 @@ void askPath(Gui& gui, FileAction action) {
   gui.openPathPopup = true;
   std::string start = folderOf(gui);
   if (action == FileAction::SaveAs && !gui.doc->untitled()) start = gui.doc->show().file.string();
+  if (action == FileAction::ExportMvr && !gui.doc->untitled()) {
+    fs::path stem = gui.doc->show().file;
+    while (stem.has_extension()) stem.replace_extension();  // "demo.haze.json" -> "demo"
+    start = stem.string() + ".mvr";
+  }
   std::snprintf(gui.pathField, sizeof(gui.pathField), "%s", start.c_str());
 }
 
@@ -109,6 +115,15 @@ void perform(Gui& gui, FileAction action, const std::string& path) {
       if (!startDesktopDialog(gui, action)) askPath(gui, action);
       return;
     case FileAction::SaveAs: askPath(gui, action); return;
+    case FileAction::ExportMvr:
+      // The export reads the saved show and keeps the fixtures' new MVR uuids in it, as
+      // `haze export-mvr` does, so the show on disk must be the one on screen.
+      if (gui.doc->untitled() || gui.doc->modified()) {
+        gui.say("save the show first: Export MVR writes the saved show (and keeps its fixtures' MVR uuids in it)", true);
+        return;
+      }
+      askPath(gui, action);
+      return;
     case FileAction::None: return;
   }
 }
@@ -155,6 +170,23 @@ void finishPath(Gui& gui, const std::string& path) {
       for (const std::string& w : gui.importWarnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
       if (gui.showImportWarnings)
         gui.say(std::to_string(imported->warnings.size()) + " import warnings: see the window", false);
+      break;
+    }
+    case FileAction::ExportMvr: {
+      const fs::path showFile = gui.doc->show().file;
+      auto exported = exportMvrFromShowFile(showFile, path);
+      if (!exported) {
+        gui.say(exported.error().str(), true);
+        break;
+      }
+      // New uuids were saved in the show: open it again so the window has them (and its stamp).
+      if (exported->uuidsMade > 0) openPath(gui, showFile.string());
+      std::fprintf(stderr, "haze: exported %s: MVR %s, %d fixtures, %zu warnings\n", path.c_str(), exported->version.c_str(),
+                   exported->fixtureCount, exported->warnings.size());
+      for (const std::string& w : exported->warnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
+      gui.say("exported " + path + ": " + std::to_string(exported->fixtureCount) + " fixtures" +
+                  (exported->warnings.empty() ? "" : ", " + std::to_string(exported->warnings.size()) + " warnings (on stderr)"),
+              false);
       break;
     }
     default: break;
@@ -239,6 +271,7 @@ void drawFileDialogs(Gui& gui) {
     const char* ask = gui.pathAction == FileAction::Open        ? "Open show (.haze.json):"
                       : gui.pathAction == FileAction::SaveAs     ? "Save show as (.haze.json):"
                       : gui.pathAction == FileAction::AddProfile ? "Add a profile file (.json, .ies, .ldt, .gdtf):"
+                      : gui.pathAction == FileAction::ExportMvr  ? "Export the rig as MVR (.mvr):"
                                                                  : "Import MVR (.mvr); the show is written beside it:";
     ImGui::TextUnformatted(ask);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();

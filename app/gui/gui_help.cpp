@@ -24,6 +24,7 @@ constexpr const char* kShortcuts[][2] = {
     {"Ctrl+Shift+Z, Ctrl+Y", "Redo"},
     {"Ctrl+N / Ctrl+O", "New show / open a show"},
     {"Ctrl+I", "Import an MVR rig (the show is written beside it)"},
+    {"Ctrl+E", "Export the saved show's rig as MVR"},
     {"Ctrl+S / Ctrl+Shift+S", "Save / save as"},
     {"Ctrl+Q", "Quit (asks about unsaved changes)"},
     {"F1", "This window"},

@@ -76,6 +76,7 @@ void handleShortcuts(Gui& gui) {
         case GLFW_KEY_S: shift ? requestFileAction(gui, FileAction::SaveAs) : saveCurrent(gui); break;
         case GLFW_KEY_O: requestFileAction(gui, FileAction::Open); break;
         case GLFW_KEY_I: requestFileAction(gui, FileAction::ImportMvr); break;
+        case GLFW_KEY_E: requestFileAction(gui, FileAction::ExportMvr); break;
         case GLFW_KEY_N: requestFileAction(gui, FileAction::New); break;
         case GLFW_KEY_Q: requestFileAction(gui, FileAction::Quit); break;
         default: break;
@@ -120,6 +121,7 @@ void drawMenuBar(Gui& gui) {
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem("Import MVR...", "Ctrl+I")) requestFileAction(gui, FileAction::ImportMvr);
+    if (ImGui::MenuItem("Export MVR...", "Ctrl+E")) requestFileAction(gui, FileAction::ExportMvr);
     ImGui::Separator();
     if (ImGui::MenuItem("Save", "Ctrl+S")) saveCurrent(gui);
     if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) requestFileAction(gui, FileAction::SaveAs);

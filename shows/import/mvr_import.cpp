@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <set>
@@ -34,7 +36,7 @@ constexpr int kMaxDepth = 32;  // nesting of groups and symbols; bounds a symbol
 constexpr std::size_t kMaxGeometryInstances = 200000;
 
 struct FixtureSource {
-  std::string spec, mode, name, fixtureId, address, focus, place;
+  std::string spec, mode, name, fixtureId, address, focus, place, uuid;
   glm::dmat4 worldMm{1.0};
   int extraAddresses = 0;
 };
@@ -178,6 +180,7 @@ class SceneWalker {
     f.place = place(obj);
     f.worldMm = world;
     f.name = obj.attribute("name").value();
+    f.uuid = obj.attribute("uuid").value();
     f.spec = obj.child("GDTFSpec").text().as_string();
     f.mode = obj.child("GDTFMode").text().as_string();
     f.fixtureId = obj.child("FixtureID").text().as_string();
@@ -209,6 +212,11 @@ class SceneWalker {
   std::set<std::string> warned_;
   std::map<std::string, pugi::xml_node> symdefs_;
 };
+
+std::string lowerAscii(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
 
 // "SHOW.haze.json" -> "SHOW"
 std::string showStem(const std::filesystem::path& file) {
@@ -416,6 +424,10 @@ class MvrImporter {
                               "\" is used");
     }
     def.id = fixtureId(f);
+    // The uuid goes back out with an export, so the CAD program recognises its fixture; a
+    // malformed or repeated one is dropped and the export makes a new one.
+    if (isMvrUuid(f.uuid) && usedUuids_.insert(lowerAscii(f.uuid)).second) def.mvrUuid = f.uuid;
+    else if (!f.uuid.empty()) out_.warnings.push_back(f.place + ": uuid \"" + f.uuid.substr(0, 40) + "\" is malformed or used twice; an export gives this fixture a new one");
     if (!f.address.empty()) {
       auto patch = parseMvrAddress(f.address);
       if (!patch.ok())
@@ -478,6 +490,7 @@ class MvrImporter {
   std::string stem_, gdtfDirName_;
   std::map<std::string, GdtfEntry> gdtfs_;  // by GDTFSpec
   std::set<std::string> usedKeys_;
+  std::set<std::string> usedUuids_;  // lower case
   std::set<int> takenIds_, usedIds_;
   int nextId_ = 1;
   std::vector<std::pair<std::size_t, std::string>> focusOf_;  // fixture index -> focus uuid
@@ -502,6 +515,22 @@ Status parseSceneXml(const ZipArchive& zip, const std::string& src, std::string&
   const pugi::xml_node root = doc.child("GeneralSceneDescription");
   if (!root || !root.child("Scene"))
     return Error{src, kSceneXml, "no <GeneralSceneDescription><Scene>; expected an MVR scene description"};
+  return Ok{};
+}
+
+// The MVR itself beside the show (SHOW_source.mvr), byte for byte: `haze export-mvr` writes its
+// layers, classes, trusses, scene objects, geometry and unknown elements back out from it.
+Status keepSource(const std::filesystem::path& mvrFile, const std::filesystem::path& showFile, Show& show) {
+  const std::string name = showStem(showFile) + "_source.mvr";
+  const std::filesystem::path target = (showFile.parent_path().empty() ? std::filesystem::path(".") : showFile.parent_path()) / name;
+  std::error_code ec;
+  if (!std::filesystem::equivalent(mvrFile, target, ec)) {
+    std::ifstream in(mvrFile, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in && !in.eof()) return Error{mvrFile.string(), "", "cannot read the MVR again to keep it beside the show"};
+    if (Status w = writeFileAtomically(target, bytes, false); !w.ok()) return w.error();
+  }
+  show.mvrSource = name;
   return Ok{};
 }
 
@@ -534,6 +563,9 @@ Result<MvrImport> importMvr(const std::filesystem::path& mvrFile, const std::fil
   if (options.writeVenue)
     if (Status s = importer.writeVenue(options.maxVenueTriangles); !s.ok()) return s.error();
   importer.addOverviewCamera();
+
+  if (options.keepSource)
+    if (Status s = keepSource(mvrFile, showFile, out.show); !s.ok()) return s.error();
 
   SaveOptions save;
   save.force = true;  // existence was checked above; a new show has no stamp to compare

@@ -41,6 +41,9 @@ struct MvrImportOptions {
   bool writeVenue = true;          // build SHOW_venue.gltf from the scene's geometry
   std::size_t maxVenueTriangles = 4'000'000;  // geometry beyond this is left out (warned)
   bool force = false;              // overwrite an existing show file
+  // Keep the MVR beside the show as SHOW_source.mvr (Show::mvrSource), for the export to write
+  // what haze does not use back out.
+  bool keepSource = true;
 };
 
 struct MvrImport {
