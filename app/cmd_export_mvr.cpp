@@ -24,20 +24,18 @@ int runExportMvr(const Args& args) {
                       "\n  \"MVR focus\", its first cue), the show's GDTF files and its other profiles written as GDTF."
                       "\n  A show imported from an MVR is written over that MVR (SHOW_source.mvr): its layers, trusses,"
                       "\n  scene objects and geometry stay. Fixtures without a uuid get one, saved in the show (its"
-                      "\n  previous version stays as SHOW.bak).\n",
-                  2);
+                      "\n  previous version stays as SHOW.bak).\n");
   cli.text("-o|--output", output, "an .mvr file name")
       .flag("--force", options.force)
       .text("--focus-list", options.focusList, "a cue list name")
       .text("--focus-cue", options.focusCue, "a cue number")
       .positional(input, "show file");
   if (auto done = cli.parse(args)) return *done;
-  if (output.empty()) return cli.fail("expected a show and -o RIG.mvr; " + std::string(kUsage));
+  if (output.empty()) return cli.usage("expected a show and -o RIG.mvr; " + std::string(kUsage));
+  // The show checked as every command checks it (haze validate's lines, exit 1).
+  if (!cli.readShow(input)) return kExitBadInput;
   auto result = exportMvrFromShowFile(input, output, options);
-  if (!result.ok()) {
-    std::cerr << result.error().str() << "\n";
-    return 1;
-  }
+  if (!result.ok()) return cli.fail(result.error().str());
   if (result->uuidsMade > 0) std::cerr << input << ": " << result->uuidsMade << " fixtures given an MVR uuid (saved in the show)\n";
   for (const std::string& w : result->warnings) std::cerr << "warning: " << output << ": " << w << "\n";
   std::cout << output << ": MVR " << result->version << ", " << result->fixtureCount
