@@ -10,7 +10,8 @@ namespace haze {
 using Args = std::vector<std::string>;  // the words after the subcommand
 
 int runRender(const Args& args);        // app/cmd_render.cpp
-int runFixture(const Args& args);       // app/cmd_fixture.cpp   (haze fixture info FILE --json)
+int runFixture(const Args& args);       // app/cmd_fixture.cpp   (haze fixture info|search|change-type)
+int runChangeType(const Args& args);    // app/cmd_change_type.cpp (haze fixture change-type SHOW ...)
 int runState(const Args& args);         // app/cmd_state.cpp     (haze state SHOW --cue N ...)
 int runValidate(const Args& args);      // app/cmd_validate.cpp  (haze validate SHOW)
 int runBench(const Args& args);         // app/cmd_bench.cpp

@@ -27,6 +27,7 @@ struct ParsedCommand {
     DeletePalette,  // delete palette NAME
     RecordGroup,    // record group NAME
     DeleteGroup,    // delete group NAME
+    ChangeType,     // [selection] type "FIXTURE TYPE" [mode "MODE"] (docs/fixtures.md)
   };
   Action action = Action::None;
   // The fixtures the line names, sorted; empty when the line names none (Set then uses the
@@ -41,6 +42,9 @@ struct ParsedCommand {
   // DeleteGroup: the existing one's name as in the show.
   std::string name;
   std::optional<PaletteKind> paletteKind;  // RecordPalette: the kind typed, if any
+  // ChangeType: the type as typed (a library fixture's name or a profile file) in `name`, and
+  // the mode ("" = the type's first).
+  std::string mode;
 };
 
 // The line split into words: '@' and '+' are words of their own wherever they are written, a '-'
