@@ -1,17 +1,27 @@
-// `haze fixture info FILE [--json]`: the facts of any profile file (native JSON, IES, LDT, GDTF)
-// on stdout; a bad file or bad arguments give one line on stderr and exit status 1.
+// `haze fixture info FILE [--mode M] [--json]`: the facts of any profile file (native JSON, IES,
+// LDT, GDTF, QLC+ .qxf) on stdout; `haze fixture search TEXT` looks in the fixture library
+// (fixtures/fixture_library.h); `haze fixture change-type` gives fixtures of a show another type
+// (app/cmd_change_type.cpp). A bad file or bad arguments give one line on stderr and exit status 1.
+#include <chrono>
+#include <cstdio>
 #include <iostream>
 
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "fixtures/facts.h"
+#include "fixtures/fixture_library.h"
 #include "fixtures/profile.h"
 
 namespace haze {
 
 namespace {
 
-constexpr const char* kUsage = "usage: haze fixture info FILE [--json]";
+constexpr const char* kUsage = "usage: haze fixture info FILE [--mode M] [--json]";
+constexpr const char* kSearchUsage =
+    "usage: haze fixture search TEXT [--library DIR]... [--limit N] [--json] [--stats]\n"
+    "  looks in the installed QLC+ definitions, the folders of HAZE_FIXTURE_PATH (':' between them)\n"
+    "  and each --library DIR (.qxf and .gdtf); case, spaces and hyphens are ignored";
+constexpr const char* kSubcommands = "expected the subcommand \"info\", \"search\" or \"change-type\"";
 
 void printText(const nlohmann::ordered_json& f) {
   auto num = [&](const char* k) { return f[k].get<double>(); };
@@ -74,19 +84,84 @@ void printText(const nlohmann::ordered_json& f) {
     for (const auto& m : f["shutter"]["modes"]) std::cout << " " << m.get<std::string>();
     std::cout << " (up to " << f["shutter"]["max_hz"].get<double>() << " Hz)\n";
   }
+  if (f.contains("defaults")) {
+    std::cout << "  defaults (not in the file):";
+    for (const auto& d : f["defaults"]) std::cout << " " << d.get<std::string>();
+    std::cout << "\n";
+  }
+}
+
+int runSearch(const Args& args) {
+  std::string query;
+  bool json = false, stats = false;
+  int limit = 0;
+  std::vector<std::filesystem::path> extra;
+  CommandLine cli("haze fixture search", std::string(kSearchUsage) + "\n");
+  cli.flag("--json", json).flag("--stats", stats).integer("--limit", limit, 0, 1000000, "a count (0 = all)");
+  cli.custom("--library", "a folder of .qxf or .gdtf files", [&](const std::string& v) {
+    extra.emplace_back(v);
+    return !v.empty();
+  });
+  cli.positional(query, "text");
+  if (auto done = cli.parse(args)) return *done;
+  const auto t0 = std::chrono::steady_clock::now();
+  const LibraryIndex index = indexLibrary(libraryFolders(extra), defaultLibraryCache());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (const std::string& w : index.warnings) std::cerr << "warning: " << w << "\n";
+  if (stats)
+    std::fprintf(stderr, "library: %zu files (%d read, %d from the cache) in %.3f s\n", index.entries.size(), index.readNow,
+                 index.fromCache, seconds);
+  std::vector<const LibraryEntry*> hits = searchLibrary(index, query);
+  if (limit > 0 && hits.size() > static_cast<size_t>(limit)) hits.resize(static_cast<size_t>(limit));
+  if (json) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const LibraryEntry* e : hits) {
+      nlohmann::ordered_json j;
+      j["manufacturer"] = e->manufacturer;
+      j["name"] = e->name;
+      j["type"] = e->type;
+      j["file"] = e->file;
+      j["format"] = e->format;
+      nlohmann::ordered_json modes = nlohmann::ordered_json::array();
+      for (const LibraryEntry::Mode& m : e->modes) modes.push_back({{"name", m.name}, {"channels", m.channels}});
+      j["modes"] = modes;
+      j["lens_degrees"] = e->degreesMax > 0 ? nlohmann::ordered_json{e->degreesMin, e->degreesMax} : nlohmann::ordered_json(nullptr);
+      j["lumens"] = e->lumens > 0 ? nlohmann::ordered_json(e->lumens) : nlohmann::ordered_json(nullptr);
+      j["weight"] = e->weightKg > 0 ? nlohmann::ordered_json(e->weightKg) : nlohmann::ordered_json(nullptr);
+      j["power"] = e->powerW > 0 ? nlohmann::ordered_json(e->powerW) : nlohmann::ordered_json(nullptr);
+      out.push_back(j);
+    }
+    std::cout << out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+    return 0;
+  }
+  if (hits.empty()) std::cout << "no fixture in the library matches \"" << query << "\"\n";
+  for (const LibraryEntry* e : hits) {
+    std::cout << e->title() << "  (" << e->type;
+    if (e->degreesMax > 0)
+      std::cout << ", " << (e->degreesMin > 0 && e->degreesMin != e->degreesMax ? std::to_string(static_cast<int>(e->degreesMin)) + "-" : "")
+                << static_cast<int>(e->degreesMax) << " deg";
+    if (e->lumens > 0) std::cout << ", " << static_cast<int>(e->lumens) << " lm";
+    std::cout << ")\n    modes:";
+    for (size_t k = 0; k < e->modes.size(); ++k)
+      std::cout << (k ? "," : "") << " \"" << e->modes[k].name << "\" " << e->modes[k].channels << " ch";
+    std::cout << "\n    " << e->file << "\n";
+  }
+  return 0;
 }
 
 }  // namespace
 
 int runFixture(const Args& args) {
+  if (!args.empty() && args[0] == "search") return runSearch(Args(args.begin() + 1, args.end()));
+  if (!args.empty() && args[0] == "change-type") return runChangeType(Args(args.begin() + 1, args.end()));
   if (args.empty() || args[0] != "info") {
-    std::cerr << "haze fixture: expected the subcommand \"info\"; " << kUsage << "\n";
+    std::cerr << "haze fixture: " << kSubcommands << "; " << kUsage << "\n";
     return kExitUsage;
   }
-  std::string file;
+  std::string file, mode;
   bool json = false;
   CommandLine cli("haze fixture info", std::string(kUsage) + "\n");
-  cli.flag("--json", json).positional(file, "file");
+  cli.flag("--json", json).text("--mode", mode, "a mode name").positional(file, "file");
   if (auto done = cli.parse(Args(args.begin() + 1, args.end()))) return *done;
   auto profile = loadProfile(file);
   if (!profile) {
@@ -96,6 +171,19 @@ int runFixture(const Args& args) {
   // What reading the profile clamped (prisms, frost beyond haze's ranges) is said, not dropped.
   for (const std::string& w : (*profile)->warnings) std::cerr << "warning: " << w << "\n";
   nlohmann::ordered_json facts = fixtureFacts(**profile);
+  if (!mode.empty()) {  // the one mode asked for
+    nlohmann::ordered_json kept = nlohmann::ordered_json::array();
+    std::string names;
+    for (const auto& m : facts["modes"]) {
+      if (m["name"] == mode) kept.push_back(m);
+      names += (names.empty() ? "\"" : ", \"") + m["name"].get<std::string>() + "\"";
+    }
+    if (kept.empty()) {
+      std::cerr << file << ": no mode \"" << mode << "\"; its modes are: " << names << "\n";
+      return 1;
+    }
+    facts["modes"] = kept;
+  }
   if (json)
     std::cout << facts.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
   else

@@ -18,7 +18,8 @@ inline constexpr int kExitBadInput = 1;
 inline constexpr int kExitUsage = 2;
 
 int runRender(const Args& args);        // app/cmd_render.cpp
-int runFixture(const Args& args);       // app/cmd_fixture.cpp   (haze fixture info FILE --json)
+int runFixture(const Args& args);       // app/cmd_fixture.cpp   (haze fixture info|search|change-type)
+int runChangeType(const Args& args);    // app/cmd_change_type.cpp (haze fixture change-type SHOW ...)
 int runState(const Args& args);         // app/cmd_state.cpp     (haze state SHOW --cue N ...)
 int runValidate(const Args& args);      // app/cmd_validate.cpp  (haze validate SHOW)
 int runBench(const Args& args);         // app/cmd_bench.cpp

@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libassimp-dev liblo-dev liblo-tools ola iproute2 libasound2-dev alsa-utils
   libopenexr-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libcairo2-dev
   xvfb xdotool x11-utils imagemagick ffmpeg poppler-utils libxml2-utils
+  qlcplus-data
 )
 # `make fuzz` (tools/fuzz.sh) asks for libFuzzer too: clang and its runtime.
 if [ "${1:-}" = "--fuzz" ]; then

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "fixtures/fixture_library.h"
 #include "shows/cue_number.h"
 #include "shows/id_ranges.h"
 #include "shows/edit/command_syntax.h"
@@ -316,6 +317,22 @@ Result<std::string> runCommandLine(ShowDocument& doc, const std::string& typed, 
       Status s = doc.run(std::make_unique<CommandLineEdit>(line, setDefaultFade(*c.fadeS)));
       if (!s) return s.error();
       return "Cues recorded from now on fade in " + seconds(*c.fadeS);
+    }
+    case ParsedCommand::Action::ChangeType: {
+      const std::vector<int> ids = c.selection ? *c.selection : doc.selection;
+      if (ids.empty()) return Error{"", "type", "no fixtures selected; expected a selection before 'type' (11 thru 20 type ...)"};
+      std::string title;
+      auto file = resolveFixtureType(c.name, {}, &title);
+      if (!file) return Error{"", "type", file.error().message};
+      auto report = doc.changeFixtureType(ids, *file, c.mode);
+      if (!report) return report.error();
+      doc.selection = ids;
+      const FixtureDef* f = doc.show().findFixture(ids.front());
+      std::string said = "Changed " + fixtures(ids) + " to " + title + ", mode \"" + (f ? f->mode : c.mode) + "\"";
+      if (!report->lines.empty())
+        said += "; " + std::to_string(report->lines.size()) + " values not carried over as they were (" + report->lines.front() +
+                (report->lines.size() > 1 ? "; ..." : "") + ")";
+      return said;
     }
     case ParsedCommand::Action::Go: {
       if (!doc.go(nowS)) return Error{"", "go", "there is no next cue"};

@@ -158,6 +158,7 @@ class Parser {
       if (!sel) return sel.error();
       c.selection = std::move(*sel);
     }
+    if (!atEnd() && word() == "type") return changeType(c);
     if (Status s = settings(c); !s) return s.error();
     return c;
   }
@@ -430,6 +431,25 @@ class Parser {
     if (!hz) return hz.error();
     c.values.shutter = Shutter{.mode = ShutterMode::Strobe, .rateHz = *hz, .duty = 0.5f};
     return Ok{};
+  }
+
+  // type TYPE ['mode' MODE]: words up to 'mode' (or one quoted name) each.
+  Result<ParsedCommand> changeType(ParsedCommand& c) {
+    ++i_;
+    offer({}, "a fixture type, quoted (\"Robe Robin 600E Spot\")");
+    auto words = [&](std::string& dst) {
+      for (; !atEnd() && !(word() == "mode" && !dst.empty()); ++i_) dst += (dst.empty() ? "" : " ") + w_[i_].text;
+    };
+    words(c.name);
+    if (c.name.empty()) return expected("a fixture type", "'type'");
+    if (!atEnd()) {
+      ++i_;  // 'mode'
+      offer({}, "a mode of the new type, quoted");
+      words(c.mode);
+      if (c.mode.empty()) return expected("a mode", "'mode'");
+    }
+    c.action = ParsedCommand::Action::ChangeType;
+    return c;
   }
 
   // selection := term (('+' | '-') term)*

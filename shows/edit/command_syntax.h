@@ -30,6 +30,7 @@ struct ParsedCommand {
     CueTimes,       // cue N time T [delay D] [follow F|off]
     LabelCue,       // label cue N "TEXT"
     DefaultFade,    // default fade T: the fade of cues recorded from now on
+    ChangeType,     // [selection] type "FIXTURE TYPE" [mode "MODE"] (docs/fixtures.md)
   };
   Action action = Action::None;
   // The fixtures the line names, sorted; empty when the line names none (Set then uses the
@@ -51,6 +52,9 @@ struct ParsedCommand {
   // DefaultFade: fadeS. LabelCue: the label is in `name`.
   std::optional<double> fadeS, delayS;
   std::optional<std::optional<double>> followS;
+  // ChangeType: the type as typed (a library fixture's name or a profile file) in `name`, and
+  // the mode ("" = the type's first).
+  std::string mode;
 };
 
 // The line split into words: '@' and '+' are words of their own wherever they are written, a '-'

@@ -132,6 +132,41 @@ Result<std::string> ShowDocument::addProfileFile(const fs::path& file) {
   return key;
 }
 
+Result<ChangeTypeReport> ShowDocument::changeFixtureType(const std::vector<int>& ids, const fs::path& file,
+                                                         const std::string& mode) {
+  auto profile = loadProfile(file);
+  if (!profile) return profile.error();
+  std::error_code ec;
+  const fs::path abs = fs::absolute(file, ec).lexically_normal();
+  const fs::path showDir = untitled() ? fs::path() : fs::absolute(show_.file, ec).parent_path().lexically_normal();
+  // The same file already in the show keeps its key.
+  std::string key;
+  for (const auto& [k, ref] : show_.profiles)
+    if (!ref.inlineObject && !ref.path.empty() && (showDir / ref.path).lexically_normal() == abs) key = k;
+  ProfileRef ref;
+  if (key.empty()) {
+    std::string base;
+    for (char c : file.stem().string()) base += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '-';
+    if (base.empty()) base = "profile";
+    key = base;
+    for (int n = 2; show_.profiles.count(key); ++n) key = base + "-" + std::to_string(n);
+    const fs::path rel = showDir.empty() ? fs::path() : abs.lexically_relative(showDir);
+    const bool inside = !rel.empty() && *rel.begin() != "..";
+    ref.path = inside ? rel.generic_string() : abs.string();
+  }
+  const auto before = loaded_.find(key);
+  const std::shared_ptr<const Profile> kept = before == loaded_.end() ? nullptr : before->second;
+  loaded_[key] = *profile;
+  auto report = std::make_shared<ChangeTypeReport>();
+  Status s = run(haze::changeFixtureType(ChangeTypeRequest{ids, key, *profile, ref, mode}, report));
+  if (!s) {
+    if (kept) loaded_[key] = kept;
+    else loaded_.erase(key);
+    return s.error();
+  }
+  return *report;
+}
+
 Result<int> ShowDocument::placeFixtureAt(const std::string& profileKey, const MountPose& pose) {
   FixturePlacement p;
   p.profile = profileKey;

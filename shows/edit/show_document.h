@@ -17,6 +17,7 @@
 #include "renderer/scene/bvh.h"
 #include "renderer/scene/venue.h"
 #include "shows/playbacks.h"
+#include "shows/edit/edit_change_type.h"
 #include "shows/edit/edit_commands.h"
 #include "shows/edit/edit_history.h"
 #include "shows/focus.h"
@@ -61,6 +62,11 @@ class ShowDocument {
   // from its file name; returns the key. The file is referred to relative to the show. One undo
   // step (Add profile KEY).
   Result<std::string> addProfileFile(const std::filesystem::path& file);
+  // Change fixture type (shows/edit/edit_change_type.h): the fixtures get the profile in `file`
+  // (any profile file; a library file outside the show's folder is referred to by its absolute
+  // path) in `mode` ("" = its first). One undo step; the report says what was not carried over.
+  Result<ChangeTypeReport> changeFixtureType(const std::vector<int>& ids, const std::filesystem::path& file,
+                                             const std::string& mode);
   // Places a fixture of `profileKey` at a mounting pose and selects it; returns its id.
   Result<int> placeFixtureAt(const std::string& profileKey, const MountPose& pose);
   // Focus to point: every selected fixture's pan and tilt so its beam axis goes through the

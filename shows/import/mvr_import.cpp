@@ -11,6 +11,7 @@
 #include <iterator>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include <glm/common.hpp>
@@ -18,6 +19,7 @@
 #include <glm/trigonometric.hpp>
 #include <pugixml.hpp>
 
+#include "fixtures/fixture_library.h"
 #include "fixtures/gdtf.h"
 #include "fixtures/core/zip_archive.h"
 #include "shows/import/mvr_camera.h"
@@ -48,7 +50,18 @@ struct GdtfEntry {
   std::vector<std::string> modes;
   glm::vec3 pivotOffsetM{0.0f};
   std::shared_ptr<const Profile> profile;  // for aiming: lens offset, pan and tilt ranges
+  std::map<std::string, std::string> modeOf;  // a library match: embedded mode -> the library's
 };
+
+// A GDTF that says nothing haze can draw beyond a default beam: no wheels, and every channel of
+// every mode read past (Capture's stubs name them Dimmer1..n).
+bool isStubGdtf(const Profile& p) {
+  if (!p.goboWheels.empty() || !p.colorWheels.empty() || !p.prisms.empty()) return false;
+  for (const DmxMode& m : p.modes)
+    for (const DmxChannel& c : m.channels)
+      if (c.attribute != DmxAttribute::None) return false;
+  return true;
+}
 
 class SceneWalker {
  public:
@@ -254,8 +267,9 @@ std::string findGdtfEntry(const ZipArchive& zip, const std::string& spec) {
 // is a method, called in order by importMvr.
 class MvrImporter {
  public:
-  MvrImporter(const ZipArchive& zip, std::string src, const std::filesystem::path& showFile, SceneWalker& walker, MvrImport& out)
-      : zip_(zip), src_(std::move(src)), walker_(walker), out_(out) {
+  MvrImporter(const ZipArchive& zip, std::string src, const std::filesystem::path& showFile, SceneWalker& walker, MvrImport& out,
+              const MvrImportOptions& options)
+      : zip_(zip), src_(std::move(src)), walker_(walker), out_(out), options_(options) {
     showDir_ = showFile.parent_path().empty() ? std::filesystem::path(".") : showFile.parent_path();
     stem_ = showStem(showFile);
     gdtfDirName_ = stem_ + "_gdtf";
@@ -408,9 +422,56 @@ class MvrImporter {
         g.profile = imported->profile;
         for (const std::string& w2 : imported->warnings) out_.warnings.push_back(g.file + ": " + w2);
         g.ok = true;
+        matchLibrary(g, *imported->profile);
       }
     }
     return Ok{};
+  }
+
+  // Replaces a stub GDTF by the library's fixture of the same manufacturer and name: its profile
+  // for the show and for aiming, each embedded mode mapped to a library mode of the same footprint
+  // (else the first). One line in out_.libraryMatches either way.
+  void matchLibrary(GdtfEntry& g, const Profile& embedded) {
+    const std::string what = g.file + " (" + embedded.manufacturer + " " + embedded.name + ")";
+    if (options_.keepEmbedded) {
+      out_.libraryMatches.push_back(what + ": kept as embedded (--keep-embedded)");
+      return;
+    }
+    if (!isStubGdtf(embedded)) {
+      out_.libraryMatches.push_back(what + ": kept (the embedded GDTF has channels haze drives)");
+      return;
+    }
+    if (!library_) library_ = indexLibrary(libraryFolders(options_.extraLibraries), options_.libraryCache);
+    const std::string wanted = compactText(embedded.manufacturer + embedded.name);
+    const LibraryEntry* hit = nullptr;
+    for (const LibraryEntry* e : searchLibrary(*library_, embedded.manufacturer + " " + embedded.name))
+      if (compactText(e->title()).rfind(wanted, 0) == 0) {
+        hit = e;
+        break;
+      }
+    if (!hit) {
+      out_.libraryMatches.push_back(what + ": a stub (no wheels, its channels read past), and no library fixture is named \"" +
+                                    embedded.manufacturer + " " + embedded.name + "\" (" + std::to_string(library_->entries.size()) +
+                                    " files indexed); kept");
+      return;
+    }
+    auto profile = loadProfile(hit->file);
+    if (!profile) {
+      out_.libraryMatches.push_back(what + ": a stub; the library's " + hit->file + " does not load (" + profile.error().str() + "); kept");
+      return;
+    }
+    std::string modes;
+    for (const DmxMode& m : embedded.modes) {
+      const DmxMode* same = nullptr;
+      for (const DmxMode& l : (*profile)->modes)
+        if (!same && l.footprint() == m.footprint()) same = &l;
+      g.modeOf[m.name] = same ? same->name : (*profile)->modes.front().name;
+      if (!modes.empty()) modes += ", ";
+      modes += "\"" + m.name + "\" -> \"" + g.modeOf[m.name] + "\"" + (same ? "" : " (no mode of " + std::to_string(m.footprint()) + " channels)");
+    }
+    out_.show.profiles[g.profileKey] = ProfileRef{hit->file, std::nullopt, false};
+    g.profile = *profile;
+    out_.libraryMatches.push_back(what + ": a stub, matched to the library's " + hit->title() + " (" + hit->file + "); modes " + modes);
   }
 
   void addFixture(const FixtureSource& f, const GdtfEntry& g) {
@@ -418,7 +479,9 @@ class MvrImporter {
     def.name = f.name.empty() ? g.profileKey : f.name;
     def.profile = g.profileKey;
     def.mode = f.mode;
-    if (std::find(g.modes.begin(), g.modes.end(), f.mode) == g.modes.end()) {
+    if (auto mapped = g.modeOf.find(f.mode); mapped != g.modeOf.end()) {
+      def.mode = mapped->second;
+    } else if (std::find(g.modes.begin(), g.modes.end(), f.mode) == g.modes.end()) {
       def.mode = g.modes.empty() ? "" : g.modes.front();
       out_.warnings.push_back(f.place + ": GDTFMode \"" + f.mode + "\" is not a mode of " + g.file + "; its first mode \"" + def.mode +
                               "\" is used");
@@ -491,6 +554,8 @@ class MvrImporter {
   std::map<std::string, GdtfEntry> gdtfs_;  // by GDTFSpec
   std::set<std::string> usedKeys_;
   std::set<std::string> usedUuids_;  // lower case
+  const MvrImportOptions& options_;
+  std::optional<LibraryIndex> library_;  // indexed at the first stub
   std::set<int> takenIds_, usedIds_;
   int nextId_ = 1;
   std::vector<std::pair<std::size_t, std::string>> focusOf_;  // fixture index -> focus uuid
@@ -557,7 +622,7 @@ Result<MvrImport> importMvr(const std::filesystem::path& mvrFile, const std::fil
 
   out.show.atmosphere.scattering = 0.03f;
   out.show.atmosphere.ambient = glm::vec3(0.02f);
-  MvrImporter importer(*zip, src, showFile, walker, out);
+  MvrImporter importer(*zip, src, showFile, walker, out, options);
   if (Status s = importer.addFixtures(); !s.ok()) return s.error();
   importer.addFocusCue();
   if (options.writeVenue)

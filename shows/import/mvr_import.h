@@ -44,6 +44,12 @@ struct MvrImportOptions {
   // Keep the MVR beside the show as SHOW_source.mvr (Show::mvrSource), for the export to write
   // what haze does not use back out.
   bool keepSource = true;
+  // An embedded GDTF that is a stub (no wheels, every channel read past: Dimmer1..n) is replaced
+  // by the fixture library's file of the same manufacturer and name (fixtures/fixture_library.h),
+  // unless keepEmbedded. The library: libraryFolders(extraLibraries), cached in libraryCache.
+  bool keepEmbedded = false;
+  std::vector<std::filesystem::path> extraLibraries;
+  std::filesystem::path libraryCache;
 };
 
 struct MvrImport {
@@ -52,6 +58,9 @@ struct MvrImport {
   int fixtureCount = 0;
   int geometryInstances = 0;        // meshes placed in the venue
   std::size_t venueTriangles = 0;
+  // One line per fixture type: the embedded GDTF kept, or matched to a library fixture (and how
+  // its modes map), or why it was not matched.
+  std::vector<std::string> libraryMatches;
 };
 
 // Reads `mvrFile`, writes `showFile` (atomically, shows/show_save.h), SHOW_gdtf/*.gdtf and the

@@ -96,7 +96,9 @@ struct Imported {
   Result<MvrImport> result = Error{};
   explicit Imported(const std::string& mvr, const std::string& showName = "rig.haze.json") {
     show = dir / showName;
-    result = importMvr(kMvrDir / mvr, show);
+    // The GDTF files as the MVR carries them (stubs matched to the fixture library are
+    // tests/cli/fixture_library.sh's).
+    result = importMvr(kMvrDir / mvr, show, MvrImportOptions{.keepEmbedded = true});
   }
 };
 
