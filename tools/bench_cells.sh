@@ -15,7 +15,7 @@ OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT
 python3 "$ROOT/tests/data/gdtf/make_gdtf.py" "$ROOT/tests/data/gdtf/hex1_wash.xml" "$OUT/hex1.gdtf"
 python3 "$ROOT/tests/data/gdtf/make_gdtf.py" "$ROOT/tests/data/gdtf/hex19_wash.xml" "$OUT/hex19.gdtf"
-VENUE="$ROOT/../shared/data/venues/Cube/Cube.gltf"
+VENUE="$ROOT/tests/data/shared/venues/Cube/Cube.gltf"  # CC0, travels with the repository
 python3 - "$OUT" "$VENUE" "$HAZE" <<'PY'
 import json, subprocess, sys
 out, venue, haze = sys.argv[1:4]

@@ -9,7 +9,8 @@
 # usage: bash cells_live.sh HAZE_BINARY REPO_ROOT
 source "$(dirname "$0")/live_session.bash" "$@"
 need_node
-DATA="$ROOT/../shared/data"
+source "$ROOT/tests/cli/test_data.bash"
+CUBE=$(data_path venues/Cube/Cube.gltf)
 
 python3 "$ROOT/tests/data/gdtf/make_gdtf.py" "$ROOT/tests/data/gdtf/hex7_wash.xml" "$TMP/hex7.gdtf" || fail "cannot zip the test GDTF"
 "$HAZE" fixture info "$TMP/hex7.gdtf" --json >"$TMP/info.json" 2>"$TMP/info_err" || fail "fixture info failed: $(cat "$TMP/info_err")"
@@ -30,7 +31,7 @@ if (bad.length) { console.error(bad.join("\n")); process.exit(1); }' "$TMP/info.
 cat >"$TMP/show.haze.json" <<JSON
 {
   "format": "haze-show", "version": 1,
-  "venue": { "gltf": "$DATA/venues/Cube/Cube.gltf" },
+  "venue": { "gltf": "$CUBE" },
   "atmosphere": { "scattering": 0.05, "absorption": 0.0, "phase": "hazy", "g": 0.0, "ambient": 0.0 },
   "cameras": [ { "name": "Side", "position": [0, 3.8, 6], "target": [0, 3.8, 0], "fov_y": 20 } ],
   "profiles": { "hex7": "hex7.gdtf" },

@@ -9,7 +9,7 @@
 set -u
 haze=$1
 repo=$2
-data=$repo/../shared/data/gdtf/mvr
+source "$repo/tests/cli/test_data.bash"
 shares="python3 $repo/tests/cli/png_shares.py"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -27,7 +27,8 @@ check() {  # check NAME FILE: its shares are within the limits
 }
 
 for rig in capture_demo_show scene_objects; do
-  if ! "$haze" import-mvr "$data/$rig.mvr" -o "$tmp/$rig.haze.json" >/dev/null 2>"$tmp/$rig.err"; then
+  want_data "gdtf/mvr/$rig.mvr" || continue
+  if ! "$haze" import-mvr "$(data_path "gdtf/mvr/$rig.mvr")" -o "$tmp/$rig.haze.json" >/dev/null 2>"$tmp/$rig.err"; then
     echo "FAIL: $rig: import-mvr: $(head -2 "$tmp/$rig.err")"; fail=$((fail + 1)); continue
   fi
   if ! "$haze" render "$tmp/$rig.haze.json" --width 640 --height 360 -o "$tmp/$rig.png" 2>"$tmp/$rig.err"; then
@@ -78,4 +79,4 @@ else
 fi
 
 echo "$passed passed, $fail failed"
-[ "$fail" -eq 0 ]
+data_exit "$fail"

@@ -6,7 +6,7 @@
 set -u
 haze="$1"
 repo="$2"
-data="$repo/../shared/data"
+source "$repo/tests/cli/test_data.bash"
 node_dir="$repo/tests/node"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
@@ -61,46 +61,55 @@ check "$tmp/par.json" "$keys" \
   "f.body.source === 'default' && f.body.base === null && f.body.head.size[0] === 0.16 && f.body.head.center[1] === 0.16"
 
 # SOURCES.md: Ansorg stage spot, axial, 37 gammas, peak ~42,000 cd, FWHM ~10 degrees.
-check "$data/photometry/ies/hydraapi/ies_34.ies" "$keys" \
+check "$(data_path photometry/ies/hydraapi/ies_34.ies)" "$keys" \
   "f.manufacturer === 'Ansorg GmbH'" "f.symmetry === 'axial'" "f.grid.gamma === 37 && f.grid.c === 1" \
   "f.peak_candela > 40000 && f.peak_candela < 44000" "f.beam_angle > 8 && f.beam_angle < 12" \
   "f.field_angle > f.beam_angle"
 
 # SOURCES.md: Regent NEO U LED12800, no symmetry, 24 C x 37 gamma; 12,800 lm luminaire.
-check "$data/photometry/ldt/eulumdat-py/sample3.ldt" "$keys" \
+check "$(data_path photometry/ldt/eulumdat-py/sample3.ldt)" "$keys" \
   "f.manufacturer === 'Regent'" "f.symmetry === 'none'" "f.grid.gamma === 37 && f.grid.c === 24" \
   "Math.abs(f.lumens - 12800) < 128" \
   "Math.abs(f.lens_radius - 0.2437) < 1e-3 && f.lens_radius_source === 'ldt'"  # 594 x 314 mm, the same area
 
 # GDTF goes through the same loadProfile (fixtures/gdtf.h): facts come out with the same keys.
-check "$data/gdtf/BlenderDMX@BeskydBeam@version10.gdtf" "$keys" \
-  "f.name === 'BeskydBeam'" "f.manufacturer === 'BlenderDMX'" "f.peak_candela > 0 && f.lumens > 0" \
-  "f.lens_radius === 0.08 && f.lens_radius_source === 'gdtf'" \
-  "f.body.source === 'gdtf' && JSON.stringify(f.body.head.size) === '[0.224,0.244,0.186]' && f.body.base.size[1] === 0.13"
+par=$(data_path "gdtf/BlenderDMX@LED_PAR_64_RGBW@v0.3.gdtf")
+check "$par" "$keys" "f.name === 'LED PAR 64 RGBW'" "f.manufacturer === 'BlenderDMX'" "f.peak_candela > 0 && f.lumens > 0" \
+  "f.lens_radius === 0.1 && f.lens_radius_source === 'gdtf'"
+beskyd_rel="gdtf/BlenderDMX@BeskydBeam@version10.gdtf"
+if want_data "$beskyd_rel"; then
+  beskyd=$(data_path "$beskyd_rel")
+  check "$beskyd" "$keys" \
+    "f.name === 'BeskydBeam'" "f.manufacturer === 'BlenderDMX'" "f.peak_candela > 0 && f.lumens > 0" \
+    "f.lens_radius === 0.08 && f.lens_radius_source === 'gdtf'" \
+    "f.body.source === 'gdtf' && JSON.stringify(f.body.head.size) === '[0.224,0.244,0.186]' && f.body.base.size[1] === 0.13"
 
-# A body in the text form too.
-"$haze" fixture info "$data/gdtf/BlenderDMX@BeskydBeam@version10.gdtf" > "$tmp/out.txt" 2>&1 || fail "fixture info (text) failed"
-grep -q "^  body (gdtf): base 0.3 x 0.13 x 0.3 m yoke arm .* head 0.224 x 0.244 x 0.186 m$" "$tmp/out.txt" ||
-  fail "the text form does not show the body: $(grep body "$tmp/out.txt")"
+  # A body in the text form too.
+  "$haze" fixture info "$beskyd" > "$tmp/out.txt" 2>&1 || fail "fixture info (text) failed"
+  grep -q "^  body (gdtf): base 0.3 x 0.13 x 0.3 m yoke arm .* head 0.224 x 0.244 x 0.186 m$" "$tmp/out.txt" ||
+    fail "the text form does not show the body: $(grep body "$tmp/out.txt")"
+  check "$beskyd" "f.body.models.length === 0"
+fi
 
 # Body models (docs/fixtures.md, "Bodies"): the BMFL's three .3ds files and the PAR's .glb are
 # listed with their triangles and sizes (each fitted to its GDTF Model's dimensions).
-check "$data/gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf" \
-  "f.body.models.length === 3" \
-  "f.body.models.map(m => m.part + ':' + m.file).join(',') === 'base:models/3ds/base.3ds,yoke:models/3ds/yoke.3ds,head:models/3ds/head.3ds'" \
-  "f.body.models.every(m => m.triangles > 10)" \
-  "JSON.stringify(f.body.models[2].size) === '[0.34,0.613,0.23]'"
-check "$data/gdtf/BlenderDMX@LED_PAR_64_RGBW@v0.3.gdtf" \
+check "$par" \
   "f.body.models.length === 1 && f.body.models[0].file === 'models/gltf/Body.glb' && f.body.models[0].part === 'head'"
-check "$data/gdtf/BlenderDMX@BeskydBeam@version10.gdtf" "f.body.models.length === 0"
-"$haze" fixture info "$data/gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf" > "$tmp/out.txt" 2>&1 ||
-  fail "fixture info (text) failed on the BMFL"
-grep -q "^    head model models/3ds/head.3ds: [0-9]* triangles, 0.34 x 0.613 x 0.23 m$" "$tmp/out.txt" ||
-  fail "the text form does not list the body models: $(grep model "$tmp/out.txt")"
+bmfl_rel="gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf"
+if want_data "$bmfl_rel"; then
+  bmfl=$(data_path "$bmfl_rel")
+  check "$bmfl" \
+    "f.body.models.length === 3" \
+    "f.body.models.map(m => m.part + ':' + m.file).join(',') === 'base:models/3ds/base.3ds,yoke:models/3ds/yoke.3ds,head:models/3ds/head.3ds'" \
+    "f.body.models.every(m => m.triangles > 10)" \
+    "JSON.stringify(f.body.models[2].size) === '[0.34,0.613,0.23]'"
+  "$haze" fixture info "$bmfl" > "$tmp/out.txt" 2>&1 || fail "fixture info (text) failed on the BMFL"
+  grep -q "^    head model models/3ds/head.3ds: [0-9]* triangles, 0.34 x 0.613 x 0.23 m$" "$tmp/out.txt" ||
+    fail "the text form does not list the body models: $(grep model "$tmp/out.txt")"
 
-# Bad input: a BMFL whose head.3ds is missing and whose yoke.3ds is broken imports, with a
-# warning naming each file; those parts are boxes (the Model's size), the base keeps its mesh.
-python3 - "$data/gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf" "$tmp/bmfl_broken.gdtf" <<'PY'
+  # Bad input: a BMFL whose head.3ds is missing and whose yoke.3ds is broken imports, with a
+  # warning naming each file; those parts are boxes (the Model's size), the base keeps its mesh.
+  python3 - "$bmfl" "$tmp/bmfl_broken.gdtf" <<'PY'
 import sys, zipfile
 src = zipfile.ZipFile(sys.argv[1])
 with zipfile.ZipFile(sys.argv[2], 'w', zipfile.ZIP_DEFLATED) as out:
@@ -109,11 +118,12 @@ with zipfile.ZipFile(sys.argv[2], 'w', zipfile.ZIP_DEFLATED) as out:
             continue
         out.writestr(name, b'not a 3ds file' if name == 'models/3ds/yoke.3ds' else src.read(name))
 PY
-check "$tmp/bmfl_broken.gdtf" \
-  "f.body.models.length === 1 && f.body.models[0].file === 'models/3ds/base.3ds'" \
-  "f.warnings.some(w => w.includes(\"model file 'head'\") && w.includes('models/3ds/head.3ds'))" \
-  "f.warnings.some(w => w.includes('models/3ds/yoke.3ds'))" \
-  "JSON.stringify(f.body.head.size) === '[0.34,0.613,0.23]' && f.body.yoke_left !== null && f.body.yoke_right !== null"
+  check "$tmp/bmfl_broken.gdtf" \
+    "f.body.models.length === 1 && f.body.models[0].file === 'models/3ds/base.3ds'" \
+    "f.warnings.some(w => w.includes(\"model file 'head'\") && w.includes('models/3ds/head.3ds'))" \
+    "f.warnings.some(w => w.includes('models/3ds/yoke.3ds'))" \
+    "JSON.stringify(f.body.head.size) === '[0.34,0.613,0.23]' && f.body.yoke_left !== null && f.body.yoke_right !== null"
+fi
 
 # A native lens_radius wins over the default.
 sed 's/"zoom"/"lens_radius": 0.07, "zoom"/' "$tmp/par.json" > "$tmp/par_lens.json"
@@ -133,3 +143,4 @@ grep -q "typeb.ies:line 3: photometric type B" "$tmp/err.txt" || fail "unexpecte
 "$haze" fixture info > /dev/null 2> "$tmp/err.txt" && fail "no file exited 0"
 grep -q "usage" "$tmp/err.txt" || fail "no usage line without a file"
 echo "fixture_info: ok"
+data_exit 0

@@ -12,7 +12,9 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 pass=0; fail=0
 check() { if eval "$2"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: $1"; fi; }
 
-bmfl="$root/../shared/data/gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf"
+source "$root/tests/cli/test_data.bash"
+need_data "gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf"
+bmfl=$(data_path "gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf")
 "$haze" fixture info "$bmfl" --json >"$tmp/bmfl.json" 2>/dev/null
 check "fixture info lists the BMFL's focus and its Focus1 channel with the fine byte" 'node -e "
   const f = JSON.parse(require(\"fs\").readFileSync(process.argv[1]));

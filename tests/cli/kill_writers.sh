@@ -14,7 +14,8 @@ haze=$1
 root=$2
 rounds=${3:-3}
 RANDOM=${4:-1}
-mvr=$root/../shared/data/gdtf/mvr
+source "$root/tests/cli/test_data.bash"
+mvr=$(dirname "$(data_path gdtf/mvr/scene_objects.mvr)")  # both MVRs travel with the repository
 demo=$root/examples/demo/demo.haze.json
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

@@ -5,10 +5,10 @@
 # proves haze's ArtPollReply works for a real controller).
 #
 # olad refuses to run as root and its E1.31 plugin never sends on a loopback interface, so olad
-# runs as the `olad` user in a network namespace of its own, joined by a veth pair (private
-# addresses, no physical interface) to a second namespace that runs haze. Needs root, `ip netns`,
-# olad, ola_set_dmx, ola_patch, setpriv and python3; without them it exits 77 (skipped) and says
-# why. Expected values are worked out by hand below (the same frame as tests/cli/live_sacn.sh).
+# runs as the `olad` user in a network namespace of its own, joined by a veth pair (the
+# loopback-range addresses 127.77.0.1 and .2, no physical interface) to a second namespace that
+# runs haze. Needs root, `ip netns`, olad, ola_set_dmx, ola_patch, setpriv and python3; without
+# them it exits 77 (skipped) and says why. Expected values are worked out by hand below (the same frame as tests/cli/live_sacn.sh).
 # usage: bash live_ola.sh HAZE_BINARY REPO_ROOT
 source "$(dirname "$0")/live_session.bash" "$@"
 
@@ -24,8 +24,8 @@ id olad >/dev/null 2>&1 || skip "no olad user (Debian's ola package creates it)"
 
 NS_OLA=hzola$$
 NS_HAZE=hzhaze$$
-OLA_IP=10.254.77.1
-HAZE_IP=10.254.77.2
+OLA_IP=127.77.0.1
+HAZE_IP=127.77.0.2
 ip netns add "$NS_OLA" 2>/dev/null || skip "cannot create a network namespace (ip netns add failed)"
 cleanup() {
   local ns pid
@@ -41,12 +41,19 @@ trap cleanup EXIT
 ip netns add "$NS_HAZE" || fail "cannot create a second network namespace"
 ip link add "vo$$" type veth peer name "vh$$" || skip "cannot create a veth pair"
 ip link set "vo$$" netns "$NS_OLA" && ip link set "vh$$" netns "$NS_HAZE" || fail "cannot move the veth ends"
-# "brd +": OLA's ArtPoll goes to the interface's broadcast address, which must exist.
-ip -n "$NS_OLA" addr add "$OLA_IP/24" brd + dev "vo$$" &&
-  ip -n "$NS_HAZE" addr add "$HAZE_IP/24" brd + dev "vh$$" || fail "cannot address the veth pair"
-for end in "$NS_OLA:vo$$" "$NS_HAZE:vh$$"; do
-  ip -n "${end%%:*}" link set lo up && ip -n "${end%%:*}" link set "${end##*:}" up &&
-    ip -n "${end%%:*}" route add 224.0.0.0/4 dev "${end##*:}" || fail "cannot bring up ${end}"
+# The veth pair carries 127.77.0.0/24, so nothing here can reach a real network. Two things make
+# a loopback-range address work off `lo`: route_localnet (the kernel otherwise drops such packets
+# as martians), and `lo` holding only 127.0.0.1/32 instead of 127.0.0.0/8 (whose local route
+# would claim the peer's address as this namespace's own). olad's RPC stays on 127.0.0.1.
+# "brd +": OLA's ArtPoll goes to the interface's broadcast address (127.77.0.255), which must exist.
+for end in "$NS_OLA:vo$$:$OLA_IP" "$NS_HAZE:vh$$:$HAZE_IP"; do
+  IFS=: read -r ns dev addr <<<"$end"
+  ip -n "$ns" link set lo up && ip -n "$ns" addr del 127.0.0.1/8 dev lo &&
+    ip -n "$ns" addr add 127.0.0.1/32 dev lo || fail "cannot narrow lo to 127.0.0.1 in $ns"
+  ip netns exec "$ns" sysctl -qw net.ipv4.conf.all.route_localnet=1 "net.ipv4.conf.$dev.route_localnet=1" ||
+    fail "cannot set route_localnet in $ns"
+  ip -n "$ns" addr add "$addr/24" brd + dev "$dev" && ip -n "$ns" link set "$dev" up &&
+    ip -n "$ns" route add 224.0.0.0/4 dev "$dev" || fail "cannot bring up $dev in $ns"
 done
 
 # olad's configuration: only the E1.31 and Art-Net plugins, on the veth address, one output
@@ -101,13 +108,13 @@ chmod +x "$TMP/haze-in-ns"
 HAZE="$TMP/haze-in-ns"
 SHOW="$ROOT/tests/data/live/live.haze.json"
 
-# Art-Net: OLA broadcasts its ArtPoll to 10.254.77.255, which a socket bound to one address does
+# Art-Net: OLA broadcasts its ArtPoll to 127.77.0.255, which a socket bound to one address does
 # not receive, so this haze binds 0.0.0.0 (docs/live.md, "Network"); it runs while sACN is tested.
 live_start Art-Net "$SHOW" --artnet --bind 0.0.0.0 --movement instant --state-json "$TMP/artnet.json"
 ARTNET_PID=$HAZE_PID
 ARTNET_ERR=$HAZE_ERR
 
-# E1.31 multicast, as the issue measured it: haze on the veth address with --multicast.
+# E1.31 multicast: haze on the veth address with --multicast.
 live_start sACN "$SHOW" --sacn --bind "$HAZE_IP" --multicast --movement instant --state-json "$TMP/sacn.json"
 for _ in $(seq 100); do
   grep -q "joined 239.255.0.1 " "$HAZE_ERR" && break

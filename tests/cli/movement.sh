@@ -9,10 +9,9 @@
 # usage: bash movement.sh HAZE_BINARY REPO_ROOT
 source "$(dirname "$0")/live_session.bash" "$@"
 need_node
-DATA="$ROOT/../shared/data"
-
-GDTF="$DATA/gdtf/Clay Paky@Alpha Spot QWO 800@allWorking.gdtf"
-[ -f "$GDTF" ] || fail "missing $GDTF"
+source "$ROOT/tests/cli/test_data.bash"
+need_data "gdtf/Clay Paky@Alpha Spot QWO 800@allWorking.gdtf"
+GDTF=$(data_path "gdtf/Clay Paky@Alpha Spot QWO 800@allWorking.gdtf")
 "$HAZE" fixture info "$GDTF" --json >"$TMP/info.json" 2>"$TMP/info_err" || fail "fixture info failed: $(cat "$TMP/info_err")"
 node -e '
 const f = JSON.parse(require("fs").readFileSync(process.argv[1], "utf8"));

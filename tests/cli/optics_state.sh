@@ -68,13 +68,16 @@ check "validate refuses optics the par lacks (exit $rc: $(tr '\n' '|' <"$tmp/bad
   '[ $rc -ne 0 ] && grep -q "values/2/frost" "$tmp/bad.txt" && grep -q "values/2/prism" "$tmp/bad.txt" && grep -q "values/2/blades" "$tmp/bad.txt"'
 
 # fixture info lists the BMFL's prisms, frost and shutter.
-bmfl="$root/../shared/data/gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf"
-"$haze" fixture info "$bmfl" --json >"$tmp/bmfl.json"
-check "fixture info lists the BMFL's optics" 'node -e "
-  const f = JSON.parse(require(\"fs\").readFileSync(process.argv[1]));
-  const ok = f.prisms.length === 2 && f.prisms[0].facets === 6 && f.prisms[0].linear === true && f.frost.max === 5 &&
-             f.blades === false && f.shutter.modes.includes(\"strobe\") && f.shutter.modes.includes(\"random\") &&
-             f.shutter.max_hz === 10 && Array.isArray(f.warnings);
-  process.exit(ok ? 0 : 1)" "$tmp/bmfl.json"'
+source "$root/tests/cli/test_data.bash"
+rel="gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf"
+if want_data "$rel"; then
+  "$haze" fixture info "$(data_path "$rel")" --json >"$tmp/bmfl.json"
+  check "fixture info lists the BMFL's optics" 'node -e "
+    const f = JSON.parse(require(\"fs\").readFileSync(process.argv[1]));
+    const ok = f.prisms.length === 2 && f.prisms[0].facets === 6 && f.prisms[0].linear === true && f.frost.max === 5 &&
+               f.blades === false && f.shutter.modes.includes(\"strobe\") && f.shutter.modes.includes(\"random\") &&
+               f.shutter.max_hz === 10 && Array.isArray(f.warnings);
+    process.exit(ok ? 0 : 1)" "$tmp/bmfl.json"'
+fi
 echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+data_exit $fail

@@ -5,9 +5,11 @@
 # the rig lit. 640x360, draft quality.
 set -uo pipefail
 haze=$1; root=$2
+. "$root/tests/cli/test_data.bash"
+need_data gdtf/mvr/capture_demo_show.mvr
 . "$root/tests/gui/gui_session.bash"
 
-cp "$root/../shared/data/gdtf/mvr/capture_demo_show.mvr" "$tmp/rig.mvr"
+cp "$(data_path gdtf/mvr/capture_demo_show.mvr)" "$tmp/rig.mvr"
 start_haze "haze - demo" "$root/examples/demo/demo.haze.json" --width 640 --height 360 --quality draft
 shot before
 tap ctrl+i                 # the path popup, its field focused

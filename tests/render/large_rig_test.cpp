@@ -1,4 +1,4 @@
-// Large rigs (issue 13): with 1000 fixtures at the default preset every beam in view must draw.
+// Large rigs: with 1000 fixtures at the default preset every beam in view must draw.
 // Its 1000 shadow maps of 1024 px (4 GB) once failed to fit llvmpipe's 1 GB per texture and
 // every beam vanished without a word. That limit comes from the maps' size, not the image's,
 // so a 320x180 image shows it as well as 1280x720 does, in a fraction of the time.

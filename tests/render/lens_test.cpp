@@ -1,4 +1,4 @@
-// Looking into a lamp (issue "The picture a designer sees first"): the pixels around a lens,
+// Looking into a lamp: the pixels around a lens,
 // GPU against the reference and against the closed form of docs/physics.md, "The lens".
 // LensInScatter: no disc (r_lens = 0), so only the in-scattering just in front of the lens is
 // seen; the lamp's own pixel came out black on the GPU. LensDisc: the glowing disc, seen along

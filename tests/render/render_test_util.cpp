@@ -8,6 +8,7 @@
 
 #include "fixtures/photometry.h"
 #include "renderer/scene/scene_builder.h"
+#include "test_data.h"
 
 namespace haze::test {
 
@@ -62,7 +63,7 @@ BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldD
 BeamState fileBeam(const std::string& relativePath, glm::vec3 lensPos, glm::vec3 dir) {
   BeamState b;
   b.pose = beamAlong(lensPos, dir);
-  const std::filesystem::path file = std::filesystem::path(HAZE_SHARED_DATA) / "photometry" / relativePath;
+  const std::filesystem::path file = test::dataFile("photometry/" + relativePath);
   auto dist = file.extension() == ".ldt" ? loadLdt(file) : loadIes(file);
   EXPECT_TRUE(dist.ok()) << (dist.ok() ? "" : dist.error().str());
   if (!dist.ok()) return b;

@@ -49,8 +49,9 @@ void addSphere(Venue& v, glm::vec3 centre, float radiusM, int segments = 32, int
 // A beam of a parametric distribution (beam/field angles, peak cd) at pos, aimed along dir.
 BeamState makeBeam(glm::vec3 lensPos, glm::vec3 dir, float beamDeg, float fieldDeg, float peakCd,
                    glm::vec3 color = glm::vec3(1.0f));
-// A beam of a photometric file (.ies or .ldt) under HAZE_SHARED_DATA/photometry, unzoomed, its
-// lens the file's luminous opening (or the default when the file gives none).
+// A beam of a photometric file (.ies or .ldt) under the test data's photometry/ folder
+// (tests/test_data.h), unzoomed, its lens the file's luminous opening (or the default when the
+// file gives none).
 BeamState fileBeam(const std::string& relativePath, glm::vec3 lensPos, glm::vec3 dir);
 
 // An n x n gobo, half opaque and half open: the rows j < n / 2 opaque (`opaqueRows`), or the

@@ -79,7 +79,7 @@ class SoftShadow : public GlTest {};
 
 // The shaft under the sphere seen from the side: every ray crosses lit haze, the penumbra, the
 // umbra (high up) and the penumbra again. Limits: the measured errors (docs/rendering.md,
-// "Soft shadows") with a margin, within the 5 % at high and 10 % at default.
+// "Soft shadows") with a margin, within 5 % at high and 10 % at default.
 TEST_F(SoftShadow, ShaftPenumbraInHazeMatchesTheReference) {
   // The sphere 1.5 m below the lens (its shadow 11.5 degrees off the axis, the penumbra about
   // 3 degrees wide at the floor), so that the penumbra takes a good part of each chord.

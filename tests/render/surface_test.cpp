@@ -13,6 +13,7 @@
 #include "app/render_session.h"
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
+#include "test_data.h"
 
 namespace haze::test {
 namespace {
@@ -124,6 +125,7 @@ TEST_F(SurfaceTest, PanTiltMovesTheSpotWherePhysicsSays) {
 // must be as smooth. Measured at default: 2.1 % before the slant-scaled offset, 1.3 % after
 // (the rest is the light map: the flood's core spans few texels of a map that reaches 80 degrees).
 TEST_F(SurfaceTest, LitFacesUnderAWideFloodAreNotMottled) {
+  HAZE_NEED_DATA("photometry/ldt/eulumdat-rs/4058075580664_FL_MAX_LUM_1200W_757_SYM_10_WAL.ldt");
   Venue venue = floorVenue(16.0f, 0.3f);
   venue.materials.push_back(Material{.name = "white", .baseColor = glm::vec4(0.9f, 0.9f, 0.9f, 1.0f)});
   addBox(venue, {-0.6f, 0.0f, -0.6f}, {0.6f, 1.2f, 0.6f});

@@ -39,7 +39,7 @@ TEST(ArtPoll, RecognisesOnlyArtPoll) {
 
 TEST(ArtPoll, ReplyFieldsFollowTheArtNet4Table) {
   ArtNodeInfo node;
-  node.ipv4 = 0xC0A8010A;  // 192.168.1.10
+  node.ipv4 = 0x7F4D010A;  // 127.77.1.10
   node.hazeUniverses = {1, 2, 18};  // Port-Addresses 0, 1 (0:0:0, 0:0:1) and 17 (0:1:1)
   const auto replies = artPollReplies(node);
   ASSERT_EQ(replies.size(), 2u) << "Sub-Net 0 and Sub-Net 1 are two pages";
@@ -48,7 +48,9 @@ TEST(ArtPoll, ReplyFieldsFollowTheArtNet4Table) {
   EXPECT_EQ(std::memcmp(r.data(), "Art-Net", 8), 0);
   EXPECT_EQ(r[8], 0x00);  // OpPollReply 0x2100, low byte first
   EXPECT_EQ(r[9], 0x21);
-  EXPECT_EQ(r[10], 192);
+  EXPECT_EQ(r[10], 127);  // IP address, most significant byte first
+  EXPECT_EQ(r[11], 77);
+  EXPECT_EQ(r[12], 1);
   EXPECT_EQ(r[13], 10);
   EXPECT_EQ(r[14] | (r[15] << 8), 6454);
   EXPECT_EQ(r[18], 0);  // NetSwitch

@@ -16,6 +16,7 @@
 #include "fixtures/gdtf.h"
 #include "fixtures/pose.h"
 #include "unit/scene/test_scenes.h"
+#include "test_data.h"
 
 namespace haze {
 namespace {
@@ -318,8 +319,9 @@ bool meetsAnyTriangle(const std::vector<BodyMesh>& meshes, const Ray& ray) {
 }
 
 TEST(Picking, GdtfBodyIsPickedOnItsMeshNotInItsGaps) {
-  auto g = loadGdtf(std::filesystem::path(HAZE_SHARED_DATA) / "gdtf" /
-                    "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  const char* bmfl = "gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf";
+  HAZE_NEED_DATA(bmfl);
+  auto g = loadGdtf(test::dataFile(bmfl));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const Body body = g->profile->housing();
   ASSERT_TRUE(body.head.mesh && body.yokeLeft.mesh && body.base.mesh);

@@ -14,6 +14,7 @@
 #include "shows/edit/show_document.h"
 #include "fixtures/pose.h"
 #include "shows/show_json.h"
+#include "test_data.h"
 
 namespace haze {
 namespace {
@@ -252,7 +253,7 @@ TEST(ShowDocument, ProfilesFromFilesJoinTheLibrary) {
   auto opened = ShowDocument::open(kDemo);
   ASSERT_TRUE(opened);
   ShowDocument& doc = **opened;
-  const fs::path ies = fs::path(HAZE_SHARED_DATA) / "photometry/ies/hydraapi/ies_4.ies";
+  const fs::path ies = test::dataFile("photometry/ies/hydraapi/ies_4.ies");
   auto key = doc.addProfileFile(ies);
   ASSERT_TRUE(key) << key.error().str();
   EXPECT_EQ(*key, "ies-4");
@@ -280,7 +281,7 @@ TEST(ShowDocument, AddingAProfileIsOneUndoStep) {
   ShowDocument& doc = **opened;
   const std::string original = showToText(doc.show());
   const size_t profiles = doc.profiles().size();
-  auto key = doc.addProfileFile(fs::path(HAZE_SHARED_DATA) / "photometry/ies/hydraapi/ies_4.ies");
+  auto key = doc.addProfileFile(test::dataFile("photometry/ies/hydraapi/ies_4.ies"));
   ASSERT_TRUE(key) << key.error().str();
   EXPECT_EQ(doc.history().undoLabel(), "Add profile " + *key);
   auto id = doc.placeFixtureAt(*key, MountPose{.positionM = {0.0f, 8.0f, -3.0f}});

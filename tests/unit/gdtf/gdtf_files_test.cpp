@@ -1,6 +1,6 @@
-// Every real GDTF under shared/data/gdtf imports, checked against numbers read independently
+// Every real GDTF of the test data (gdtf/) imports, checked against numbers read independently
 // from its description.xml (libzip + pugixml here, not the importer's code) and against the
-// gobo images copied out of the archives into shared/data/gobos/gdtf-wheels.
+// gobo images copied out of the archives into the test data's gobos/gdtf-wheels.
 #include <gtest/gtest.h>
 
 #include <zip.h>
@@ -15,12 +15,12 @@
 #include "fixtures/gdtf_wheels.h"
 #include "fixtures/gobo_image.h"
 #include "unit/gdtf/zip_builder.h"
+#include "test_data.h"
 
 namespace haze {
 namespace {
 
-const std::filesystem::path kGdtfDir = std::filesystem::path(HAZE_SHARED_DATA) / "gdtf";
-const std::filesystem::path kGoboDir = std::filesystem::path(HAZE_SHARED_DATA) / "gobos" / "gdtf-wheels";
+std::filesystem::path gdtfFile(const std::string& name) { return test::dataFile("gdtf/" + name); }
 
 // The bytes of one archive member, read with libzip directly.
 std::string unzipMember(const std::filesystem::path& file, const char* member) {
@@ -80,7 +80,8 @@ double fluxLm(const Distribution& d) {
 class GdtfFile : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(GdtfFile, ImportsWithTheNumbersOfItsXml) {
-  const auto file = kGdtfDir / GetParam();
+  HAZE_NEED_DATA("gdtf/" + GetParam());
+  const auto file = gdtfFile(GetParam());
   const std::string xml = unzipMember(file, "description.xml");
   ASSERT_FALSE(xml.empty());
   pugi::xml_document doc;
@@ -123,12 +124,13 @@ INSTANTIATE_TEST_SUITE_P(SharedData, GdtfFile,
 
 TEST(GdtfFiles, EveryFileInTheFolderIsCovered) {
   int count = 0;
-  for (const auto& e : std::filesystem::directory_iterator(kGdtfDir)) count += e.path().extension() == ".gdtf";
-  EXPECT_EQ(count, 4) << "a new .gdtf in shared/data/gdtf: add it to the SharedData list";
+  for (const auto& e : std::filesystem::directory_iterator(test::dataDir("gdtf"))) count += e.path().extension() == ".gdtf";
+  // Four in ../shared/data, one of them in the repository (tests/data/shared/SOURCES.md).
+  EXPECT_EQ(count, test::haveFullData() ? 4 : 1) << "a new .gdtf in the test data: add it to the SharedData list";
 }
 
 TEST(GdtfFiles, LedParIsAnRgbwWashHangingBelowItsBody) {
-  auto g = loadGdtf(kGdtfDir / "BlenderDMX@LED_PAR_64_RGBW@v0.3.gdtf");
+  auto g = loadGdtf(gdtfFile("BlenderDMX@LED_PAR_64_RGBW@v0.3.gdtf"));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const Profile& p = *g->profile;
   // <Beam Position ... {0,0,1,-0.134}> under Body, no Axis: lens 0.134 m below the origin.
@@ -147,7 +149,8 @@ TEST(GdtfFiles, LedParIsAnRgbwWashHangingBelowItsBody) {
 }
 
 TEST(GdtfFiles, BmflSpotModesWheelsAndRanges) {
-  auto g = loadGdtf(kGdtfDir / "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  HAZE_NEED_DATA("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  auto g = loadGdtf(gdtfFile("Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf"));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const Profile& p = *g->profile;
   // Yoke at z -0.105, Head at -0.389 below it, Beam -0.319 below the head.
@@ -200,7 +203,8 @@ TEST(GdtfFiles, BmflSpotModesWheelsAndRanges) {
 }
 
 TEST(GdtfFiles, ClayPakyCountsWheelSlotsFromZeroAndFindsFolderedMedia) {
-  auto g = loadGdtf(kGdtfDir / "Clay Paky@Alpha Spot QWO 800@allWorking.gdtf");
+  HAZE_NEED_DATA("gdtf/Clay Paky@Alpha Spot QWO 800@allWorking.gdtf");
+  auto g = loadGdtf(gdtfFile("Clay Paky@Alpha Spot QWO 800@allWorking.gdtf"));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const Profile& p = *g->profile;
   const DmxChannel& gobo = p.modes.at(0).channels[10];  // Offset 11
@@ -221,13 +225,13 @@ TEST(GdtfFiles, ClayPakyCountsWheelSlotsFromZeroAndFindsFolderedMedia) {
 // its transmittance follows Annex E pixel by pixel (checked on the copy, decoded here).
 void expectGoboMatches(const std::string& gdtf, std::size_t wheel, std::size_t slot, const char* member,
                        const char* copy) {
-  auto g = loadGdtf(kGdtfDir / gdtf);
+  auto g = loadGdtf(gdtfFile(gdtf));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const WheelSlot& s = g->profile->goboWheels.at(wheel).slots.at(slot);
   EXPECT_EQ(s.imagePath, member);
   ASSERT_TRUE(s.image);
-  const std::string archived = unzipMember(kGdtfDir / gdtf, member);
-  const std::string shared = test::readFile(kGoboDir / copy);
+  const std::string archived = unzipMember(gdtfFile(gdtf), member);
+  const std::string shared = test::readFile(test::dataFile(std::string("gobos/gdtf-wheels/") + copy));
   ASSERT_FALSE(shared.empty());
   EXPECT_EQ(archived, shared);
   auto fromCopy = goboFromImageBytes({reinterpret_cast<const std::uint8_t*>(shared.data()), shared.size()}, copy, copy);
@@ -242,6 +246,8 @@ void expectGoboMatches(const std::string& gdtf, std::size_t wheel, std::size_t s
 }
 
 TEST(GdtfFiles, BmflGoboMatchesTheSharedCopy) {
+  HAZE_NEED_DATA("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  HAZE_NEED_DATA("gobos/gdtf-wheels/BMFL_15020296_DotBreakup.png");
   expectGoboMatches("Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf", 1, 1,
                     "wheels/15020296.png", "BMFL_15020296_DotBreakup.png");
   expectGoboMatches("Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf", 0, 6,
@@ -249,6 +255,8 @@ TEST(GdtfFiles, BmflGoboMatchesTheSharedCopy) {
 }
 
 TEST(GdtfFiles, BeskydGoboMatchesTheSharedCopy) {
+  HAZE_NEED_DATA("gdtf/BlenderDMX@BeskydBeam@version10.gdtf");
+  HAZE_NEED_DATA("gobos/gdtf-wheels/BeskydBeam_image_0001.png");
   expectGoboMatches("BlenderDMX@BeskydBeam@version10.gdtf", 0, 1, "wheels/image_0001.png", "BeskydBeam_image_0001.png");
   expectGoboMatches("BlenderDMX@BeskydBeam@version10.gdtf", 0, 5, "wheels/image_0005.png", "BeskydBeam_image_0005.png");
 }

@@ -9,12 +9,12 @@
 #include "fixtures/gdtf.h"
 #include "fixtures/core/zip_archive.h"
 #include "unit/gdtf/zip_builder.h"
+#include "test_data.h"
 
 namespace haze {
 namespace {
 
-const std::filesystem::path kLedPar =
-    std::filesystem::path(HAZE_SHARED_DATA) / "gdtf" / "BlenderDMX@LED_PAR_64_RGBW@v0.3.gdtf";
+const std::filesystem::path kLedPar = test::dataFile("gdtf/BlenderDMX@LED_PAR_64_RGBW@v0.3.gdtf");
 
 struct Lcg {
   std::uint32_t x;

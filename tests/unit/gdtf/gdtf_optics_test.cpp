@@ -11,11 +11,11 @@
 #include "fixtures/dmx_decode.h"
 #include "fixtures/gdtf.h"
 #include "unit/gdtf/zip_builder.h"
+#include "test_data.h"
 
 namespace haze {
 namespace {
 
-const std::filesystem::path kGdtfDir = std::filesystem::path(HAZE_SHARED_DATA) / "gdtf";
 
 const DmxChannel* channelOf(const DmxMode& m, DmxAttribute a) {
   for (const DmxChannel& c : m.channels)
@@ -31,7 +31,8 @@ Attributes decodeOne(const Profile& p, const DmxMode& m, DmxAttribute a, uint8_t
 }
 
 TEST(GdtfOptics, BmflHasTwoSixFacetPrismsFrostAndAFullShutter) {
-  auto g = loadGdtf(kGdtfDir / "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  HAZE_NEED_DATA("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  auto g = loadGdtf(test::dataFile("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf"));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const Profile& p = *g->profile;
   // Wheel Prism1: Open, "P01 (6F Linear)" with six facets on the x axis, "P02 (8F Circular)" with
@@ -77,7 +78,8 @@ TEST(GdtfOptics, BmflHasTwoSixFacetPrismsFrostAndAFullShutter) {
 }
 
 TEST(GdtfOptics, BmflHasTwoGoboWheelsAndGobo2DrivesTheSecond) {
-  auto g = loadGdtf(kGdtfDir / "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  HAZE_NEED_DATA("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  auto g = loadGdtf(test::dataFile("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf"));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const Profile& p = *g->profile;
   // <Wheel Name="Gobo1"> and <Wheel Name="Gobo2">: Open and six gobos each.
@@ -123,7 +125,8 @@ TEST(GdtfOptics, BmflHasTwoGoboWheelsAndGobo2DrivesTheSecond) {
 // The BMFL tells index from spin by its gobo and prism channels (ModeMaster on a SelectSpin
 // range): Gobo1 32-59 is "Gobo n - Rotation", and then Gobo1Pos (16 bit) runs -30 -> 30 deg/s.
 TEST(GdtfOptics, BmflSpinsWhenItsWheelChannelSelectsSpinning) {
-  auto g = loadGdtf(kGdtfDir / "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  HAZE_NEED_DATA("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  auto g = loadGdtf(test::dataFile("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf"));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const Profile& p = *g->profile;
   const DmxMode& m = p.modes.at(0);
@@ -154,7 +157,8 @@ TEST(GdtfOptics, BmflSpinsWhenItsWheelChannelSelectsSpinning) {
 }
 
 TEST(GdtfOptics, AlphaSpotNamesItsThreeFacetPrismAndPulses) {
-  auto g = loadGdtf(kGdtfDir / "Clay Paky@Alpha Spot QWO 800@allWorking.gdtf");
+  HAZE_NEED_DATA("gdtf/Clay Paky@Alpha Spot QWO 800@allWorking.gdtf");
+  auto g = loadGdtf(test::dataFile("gdtf/Clay Paky@Alpha Spot QWO 800@allWorking.gdtf"));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const Profile& p = *g->profile;
   // Prism1 without a wheel: ChannelSets "Open" (0) and "3 facet prism" (128).
@@ -271,7 +275,8 @@ TEST(GdtfOptics, ReadsFramingBladesAndClampsAPrismOfFortyFacets) {
 // default disc, in from DMX 255 (the ChannelSet "Animation"), and the rotate channel runs
 // -720..720 deg/s.
 TEST(GdtfAnimation, BmflImportsItsDiscAndItsChannels) {
-  auto g = loadGdtf(kGdtfDir / "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  HAZE_NEED_DATA("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  auto g = loadGdtf(test::dataFile("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf"));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const Profile& p = *g->profile;
   ASSERT_EQ(p.animationWheels.size(), 1u);
@@ -300,7 +305,8 @@ TEST(GdtfAnimation, BmflImportsItsDiscAndItsChannels) {
 }
 
 TEST(GdtfAnimation, AlphaSpotGetsTheDefaultDiscForAWheellessChannel) {
-  auto g = loadGdtf(kGdtfDir / "Clay Paky@Alpha Spot QWO 800@allWorking.gdtf");
+  HAZE_NEED_DATA("gdtf/Clay Paky@Alpha Spot QWO 800@allWorking.gdtf");
+  auto g = loadGdtf(test::dataFile("gdtf/Clay Paky@Alpha Spot QWO 800@allWorking.gdtf"));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const Profile& p = *g->profile;
   ASSERT_EQ(p.animationWheels.size(), 1u);
@@ -326,7 +332,8 @@ TEST(GdtfAnimation, AlphaSpotGetsTheDefaultDiscForAWheellessChannel) {
 // "Focus near" at 65535; mode 2 at offset 30, 8 bits) gives the profile a focus with haze's
 // defaults, and its DMX value runs 0..1 over the lens's travel (docs/gdtf.md, "Focus").
 TEST(GdtfFocus, BmflFocus1DecodesOverTheLensesTravel) {
-  auto g = loadGdtf(kGdtfDir / "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  HAZE_NEED_DATA("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf");
+  auto g = loadGdtf(test::dataFile("gdtf/Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf"));
   ASSERT_TRUE(g.ok()) << g.error().str();
   const Profile& p = *g->profile;
   EXPECT_TRUE(p.hasGateFocus);

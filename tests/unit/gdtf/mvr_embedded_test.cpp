@@ -1,4 +1,4 @@
-// The GDTF files embedded in the shared MVR scenes, unpacked with ZipArchive (as the MVR
+// The GDTF files embedded in the MVR scenes of the test data, unpacked with ZipArchive (as the MVR
 // importer will) and imported from memory. Which ones import is recorded in docs/gdtf.md.
 #include <gtest/gtest.h>
 
@@ -7,11 +7,10 @@
 
 #include "fixtures/gdtf.h"
 #include "fixtures/core/zip_archive.h"
+#include "test_data.h"
 
 namespace haze {
 namespace {
-
-const std::filesystem::path kMvrDir = std::filesystem::path(HAZE_SHARED_DATA) / "gdtf" / "mvr";
 
 struct Imported {
   std::string name;        // the fixture type
@@ -21,7 +20,7 @@ struct Imported {
 // file name inside the MVR -> what it imported as.
 std::map<std::string, Imported> importEmbedded(const std::string& mvr, std::vector<std::string>& failures) {
   std::map<std::string, Imported> out;
-  auto zip = ZipArchive::open(kMvrDir / mvr);
+  auto zip = ZipArchive::open(test::dataFile("gdtf/mvr/" + mvr));
   EXPECT_TRUE(zip.ok()) << zip.error().str();
   if (!zip.ok()) return out;
   EXPECT_TRUE(zip->contains("GeneralSceneDescription.xml"));
@@ -67,6 +66,7 @@ TEST(MvrEmbedded, SceneObjects) {
 }
 
 TEST(MvrEmbedded, CaptureDemoShow) {
+  HAZE_NEED_DATA("gdtf/mvr/capture_demo_show.mvr");
   std::vector<std::string> failures;
   auto got = importEmbedded("capture_demo_show.mvr", failures);
   for (const auto& f : failures) ADD_FAILURE() << f;

@@ -19,12 +19,14 @@
 #include "shows/import/mvr_import.h"
 #include "shows/show.h"
 #include "shows/show_validate.h"
+#include "test_data.h"
 #include "unit/gdtf/zip_builder.h"
 
 namespace haze {
 namespace {
 
-const std::filesystem::path kMvrDir = std::filesystem::path(HAZE_SHARED_DATA) / "gdtf" / "mvr";
+// The MVR file `name` of the test data (tests/test_data.h).
+std::filesystem::path mvrFile(const std::string& name) { return test::dataFile("gdtf/mvr/" + name); }
 
 // --- the test's own reading of the XML ---------------------------------------------------
 
@@ -80,7 +82,7 @@ std::vector<XmlFixture> readFixtures(const pugi::xml_node& list, const Affine& p
 }
 
 std::string readXml(const std::string& mvr) {
-  auto zip = ZipArchive::open(kMvrDir / mvr);
+  auto zip = ZipArchive::open(mvrFile(mvr));
   EXPECT_TRUE(zip.ok());
   auto bytes = zip->read("GeneralSceneDescription.xml");
   EXPECT_TRUE(bytes.ok());
@@ -98,7 +100,7 @@ struct Imported {
     show = dir / showName;
     // The GDTF files as the MVR carries them (stubs matched to the fixture library are
     // tests/cli/fixture_library.sh's).
-    result = importMvr(kMvrDir / mvr, show, MvrImportOptions{.keepEmbedded = true});
+    result = importMvr(mvrFile(mvr), show, MvrImportOptions{.keepEmbedded = true});
   }
 };
 
@@ -235,6 +237,7 @@ TEST(MvrImport, SceneObjectsTheatre) {
 }
 
 TEST(MvrImport, CaptureDemoShow) {
+  HAZE_NEED_DATA("gdtf/mvr/capture_demo_show.mvr");
   checkAgainstXml("capture_demo_show.mvr", 76);
   Imported imp("capture_demo_show.mvr");
   ASSERT_TRUE(imp.result.ok());
@@ -246,6 +249,7 @@ TEST(MvrImport, CaptureDemoShow) {
 // A 2.5 m truss piece (capture_demo_show's symdef "DT34/3-250", a .3ds in mm) comes out 2.5 m
 // long in the venue: the .3ds unit and the node matrices' scale are right.
 TEST(MvrImport, TrussSymbolIsTwoAndAHalfMetresLong) {
+  HAZE_NEED_DATA("gdtf/mvr/capture_demo_show.mvr");
   Imported imp("capture_demo_show.mvr");
   ASSERT_TRUE(imp.result.ok());
   std::ifstream in(imp.dir / "rig_venue.gltf");
@@ -291,7 +295,8 @@ std::pair<glm::dvec3, glm::dvec3> nodeBounds(const nlohmann::json& gltf, const s
   return {};
 }
 
-TEST(MvrImport, VenueGeometryIsPlacedInHazeFrame) {
+TEST(MvrImport, CaptureVenueGeometryIsPlacedInHazeFrame) {
+  HAZE_NEED_DATA("gdtf/mvr/capture_demo_show.mvr");
   {
     Imported imp("capture_demo_show.mvr");
     ASSERT_TRUE(imp.result.ok());
@@ -317,6 +322,9 @@ TEST(MvrImport, VenueGeometryIsPlacedInHazeFrame) {
     EXPECT_GT(lowest, -0.5);
     EXPECT_LT(highest, 20.0);
   }
+}
+
+TEST(MvrImport, TheatreVenueGeometryIsPlacedInHazeFrame) {
   {
     Imported imp("scene_objects.mvr");
     ASSERT_TRUE(imp.result.ok());
@@ -372,7 +380,7 @@ TEST(MvrImport, OverviewCameraIsInsideTheTheatre) {
 // --- broken MVRs ---------------------------------------------------------------------------
 
 std::string gdtfBytes() {
-  auto zip = ZipArchive::open(kMvrDir / "basic_fixture.mvr");
+  auto zip = ZipArchive::open(mvrFile("basic_fixture.mvr"));
   EXPECT_TRUE(zip.ok());
   auto bytes = zip->read("LED PAR 64 RGBW.gdtf");
   EXPECT_TRUE(bytes.ok());
@@ -528,7 +536,7 @@ TEST(MvrBroken, SymbolExplosionIsBounded) {
 // first 2 million only.
 TEST(MvrBroken, PlacedTrianglesForTheCameraAreBounded) {
   const std::string chandelier = "f9af9d23-3867-48c1-b7f3-6ae621dd6021.glb";
-  auto theatre = ZipArchive::open(kMvrDir / "scene_objects.mvr");
+  auto theatre = ZipArchive::open(mvrFile("scene_objects.mvr"));
   ASSERT_TRUE(theatre.ok());
   auto mesh = theatre->read(chandelier);
   ASSERT_TRUE(mesh.ok());
@@ -548,13 +556,13 @@ TEST(MvrBroken, PlacedTrianglesForTheCameraAreBounded) {
 TEST(MvrBroken, RefusesToOverwriteAnExistingShow) {
   test::TempDir dir("mvrexists");
   test::writeFile(dir / "s.haze.json", "{}");
-  auto r = importMvr(kMvrDir / "basic_fixture.mvr", dir / "s.haze.json");
+  auto r = importMvr(mvrFile("basic_fixture.mvr"), dir / "s.haze.json");
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.error().message.find("already exists"), std::string::npos);
   EXPECT_EQ(test::readFile(dir / "s.haze.json"), "{}");
   MvrImportOptions force;
   force.force = true;
-  EXPECT_TRUE(importMvr(kMvrDir / "basic_fixture.mvr", dir / "s.haze.json", force).ok());
+  EXPECT_TRUE(importMvr(mvrFile("basic_fixture.mvr"), dir / "s.haze.json", force).ok());
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "shows/import/mvr_import.h"
 #include "unit/gdtf/zip_builder.h"
+#include "test_data.h"
 
 namespace haze {
 namespace {
@@ -43,8 +44,9 @@ TEST(MvrWarnings, DifferentSentencesStaySeparate) {
 // The Capture export: its warnings fold into a handful of lines, and the counts in
 // the folded lines add up to every warning.
 TEST(MvrWarnings, CaptureDemoShowFoldsIntoAFewLines) {
+  HAZE_NEED_DATA("gdtf/mvr/capture_demo_show.mvr");
   test::TempDir dir("mvrwarn");
-  auto r = importMvr(std::filesystem::path(HAZE_SHARED_DATA) / "gdtf" / "mvr" / "capture_demo_show.mvr", dir / "c.haze.json");
+  auto r = importMvr(test::dataFile("gdtf/mvr/capture_demo_show.mvr"), dir / "c.haze.json");
   ASSERT_TRUE(r.ok()) << r.error().str();
   // Its stub GDTFs' Dimmer1..n channels are read as dimmers (docs/live.md), so they no longer
   // give a warning per channel; what is left still folds, and adds up.

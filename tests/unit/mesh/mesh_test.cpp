@@ -1,5 +1,5 @@
 // The shared mesh loader (fixtures/mesh): the seeds of its fuzz corpus, the real GDTF models of
-// ../shared/data (a BMFL's .3ds in mm, a BlenderDMX PAR's .glb in m), and its refusals.
+// test data (a BMFL's .3ds in mm, a BlenderDMX PAR's .glb in m), and its refusals.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -8,6 +8,7 @@
 
 #include "fixtures/core/zip_archive.h"
 #include "fixtures/mesh/mesh.h"
+#include "test_data.h"
 
 namespace haze {
 namespace {
@@ -18,7 +19,7 @@ std::vector<std::uint8_t> readFile(const std::string& path) {
 }
 
 std::vector<std::uint8_t> fromGdtf(const std::string& gdtf, const std::string& entry) {
-  auto zip = ZipArchive::open(std::string(HAZE_SHARED_DATA) + "/gdtf/" + gdtf);
+  auto zip = ZipArchive::open(test::dataFile("gdtf/" + gdtf).string());
   if (!zip) return {};
   auto bytes = zip->read(entry);
   return bytes ? *bytes : std::vector<std::uint8_t>{};
@@ -39,8 +40,9 @@ TEST(Mesh, CubeSeedIn3dsIsTurnedYUp) {
   for (std::uint32_t i : m->indices) EXPECT_LT(i, m->positions.size());
 }
 
-TEST(Mesh, RealGdtfModels) {
+TEST(Mesh, RealGdtfModelIn3dsIsInMillimetres) {
   const std::string bmfl = "Robe lighting s.r.o.@BMFL Spot@cannot assign 0 to frost function.gdtf";
+  HAZE_NEED_DATA("gdtf/" + bmfl);
   for (const char* part : {"models/3ds/base.3ds", "models/3ds/yoke.3ds", "models/3ds/head.3ds"}) {
     const auto bytes = fromGdtf(bmfl, part);
     ASSERT_FALSE(bytes.empty()) << part;
@@ -52,6 +54,9 @@ TEST(Mesh, RealGdtfModels) {
     EXPECT_GT(std::max({size.x, size.y, size.z}), 50.0f) << part;
     EXPECT_LT(std::max({size.x, size.y, size.z}), 1000.0f) << part;
   }
+}
+
+TEST(Mesh, RealGdtfModelInGlbIsInMetres) {
   const auto body = fromGdtf("BlenderDMX@LED_PAR_64_RGBW@v0.3.gdtf", "models/gltf/Body.glb");
   ASSERT_FALSE(body.empty());
   auto m = loadMesh(body.data(), body.size(), "Body.glb");

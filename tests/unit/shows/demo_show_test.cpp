@@ -1,4 +1,4 @@
-// The bundled demo show (examples/demo/demo.haze.json, written by the lead) must validate, load
+// The bundled demo show (examples/demo/demo.haze.json) must validate, load
 // with its profiles, play every cue, and survive a save/load round trip unchanged.
 #include <gtest/gtest.h>
 

@@ -100,7 +100,7 @@ struct OneFixture {
   }
 };
 
-// The case: 180 degrees of pan asked in 0.2 s of a fixture that does 540 degrees in 2 s
+// 180 degrees of pan asked in 0.2 s of a fixture that does 540 degrees in 2 s
 // arrives when its speed lets it (at 270 deg/s with a 0.25 s ramp: 180/270 + 0.25 s), not at 0.2 s.
 TEST(Movement, CueFadeArrivesAtTheFixturesSpeed) {
   OneFixture s(270.0f, 1080.0f);

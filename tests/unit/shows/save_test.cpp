@@ -113,8 +113,7 @@ TEST(SaveShow, SavingIntoAnotherFolderKeepsPathsPointingAtTheSameFiles) {
   // The profile file and the venue are the same files as before, reached from the new folder.
   EXPECT_TRUE(fs::equivalent(moved->resolve(moved->profiles.at("spot").path),
                              test::showsDir() / "profiles/test-spot.json"));
-  EXPECT_TRUE(fs::equivalent(moved->resolve(moved->venueGltf), test::showsDir() /
-                                                                   "../../../../shared/data/venues/Cube/Cube.gltf"));
+  EXPECT_TRUE(fs::equivalent(moved->resolve(moved->venueGltf), test::showsDir() / "../shared/venues/Cube/Cube.gltf"));
   EXPECT_TRUE(loadProfiles(*moved).ok());
   EXPECT_EQ(s->profiles.at("spot").path, moved->profiles.at("spot").path);  // the saved show follows too
   EXPECT_EQ(s->file, file);

@@ -25,7 +25,7 @@ TEST(ShowIo, LoadsEveryPart) {
   auto r = loadShow(validShowPath());
   ASSERT_TRUE(r.ok()) << r.error().str();
   const Show& s = *r;
-  EXPECT_EQ(s.venueGltf, "../../../../shared/data/venues/Cube/Cube.gltf");
+  EXPECT_EQ(s.venueGltf, "../shared/venues/Cube/Cube.gltf");
   EXPECT_FLOAT_EQ(s.atmosphere.scattering, 0.03f);
   EXPECT_EQ(s.atmosphere.phase, "hazy");
   EXPECT_EQ(s.atmosphere.ambient, glm::vec3(0.02f));
