@@ -9,7 +9,7 @@
 set -u
 haze=$1
 repo=$2
-data=$repo/../shared/data/gdtf/mvr
+source "$repo/tests/cli/test_data.bash"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0
@@ -63,8 +63,8 @@ test ! -e "$tmp/none.mvr"; rc=$?; check "nothing written for a missing show" $rc
 code=$?
 test $code -eq 2; rc=$?; check "missing -o exits 2 (got $code)" $rc
 
-if [ -f "$data/scene_objects.mvr" ]; then
-  "$haze" import-mvr "$data/scene_objects.mvr" -o "$tmp/theatre.haze.json" >/dev/null 2>&1
+if theatre=$(data_path gdtf/mvr/scene_objects.mvr); then
+  "$haze" import-mvr "$theatre" -o "$tmp/theatre.haze.json" >/dev/null 2>&1
   "$haze" export-mvr "$tmp/theatre.haze.json" -o "$tmp/theatre.mvr" >"$tmp/tout" 2>"$tmp/terr"
   rc=$?
   check "theatre export exits 0 (got $rc): $(head -3 "$tmp/terr")" $rc
@@ -74,7 +74,7 @@ if [ -f "$data/scene_objects.mvr" ]; then
   grep -q "MVR 1.5, 72 fixtures, 1 GDTF files, 0 focus points.*0 fixtures moved, 0 removed" "$tmp/tout"
   rc=$?
   check "theatre over its source: nothing moved or new: $(cat "$tmp/tout")" $rc
-  scene_xml "$data/scene_objects.mvr" "$tmp/theatre-src.xml"
+  scene_xml "$theatre" "$tmp/theatre-src.xml"
   for kind in FocusPoint SceneObject Layer; do
     a=$(xmllint --xpath "count(//$kind)" "$tmp/theatre-src.xml")
     b=$(xmllint --xpath "count(//$kind)" "$tmp/theatre.xml" 2>/dev/null || echo x)
@@ -87,8 +87,8 @@ if [ -f "$data/scene_objects.mvr" ]; then
   b=$(grep -o '"uuid": "[^"]*"' "$tmp/back.haze.json" | sort | md5sum)
   test "$a" = "$b"; rc=$?; check "the same uuids come back" $rc
 else
-  echo "note: $data/scene_objects.mvr absent (the shared test data); the MVR round trip is left out"
+  want_data gdtf/mvr/scene_objects.mvr
 fi
 
 echo "$passed passed, $fail failed"
-[ "$fail" -eq 0 ]
+data_exit "$fail"

@@ -114,8 +114,8 @@ grep -q 'fixture 102 (universe 1 13-44) overlaps fixture 101 (universe 1 1-32)' 
 cmp -s "$show" "$tmp/before.json" || fail "a refused change wrote the show"
 # An imported rig whose GDTF files are stubs: the types the library has are matched, the rest
 # said; --keep-embedded keeps them all.
-mvr="$repo/../shared/data/gdtf/mvr/capture_demo_show.mvr"
-if [ -f "$mvr" ]; then
+source "$repo/tests/cli/test_data.bash"
+if mvr=$(data_path gdtf/mvr/capture_demo_show.mvr); then
   "$haze" import-mvr "$mvr" -o "$tmp/cap/cap.haze.json" --no-venue > "$tmp/mvr.txt" 2> "$tmp/err.txt" || fail "import-mvr exited $?: $(cat "$tmp/err.txt")"
   grep -q "(ADB ALC4): a stub, matched to the library's ADB ALC4 ($qlc/ADB/ADB-ALC4.qxf)" "$tmp/mvr.txt" || fail "ALC4 not matched: $(cat "$tmp/mvr.txt")"
   grep -q "(Clay Paky A.leda Wash K20): a stub, matched to the library's Clay Paky A.LEDA Wash K20" "$tmp/mvr.txt" || fail "K20 not matched"
@@ -127,6 +127,7 @@ if [ -f "$mvr" ]; then
   [ "$(grep -c 'kept as embedded' "$tmp/keep.txt")" -eq 5 ] || fail "--keep-embedded: $(cat "$tmp/keep.txt")"
   grep -q "qlcplus" "$tmp/keep/cap.haze.json" && fail "--keep-embedded still refers to the library"
 else
-  echo "note: $mvr missing; the MVR match was not checked"
+  want_data gdtf/mvr/capture_demo_show.mvr
 fi
 echo "fixture library: search, info, change-type and MVR matching OK"
+data_exit 0

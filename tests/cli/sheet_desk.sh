@@ -51,8 +51,8 @@ print(("" if ok else "FAIL: ") + "patch order %s" % [f"{i}@{u}.{a}" for u, a, i 
 sys.exit(0 if ok else 1)
 PY
 
-mvr="$root/../shared/data/gdtf/mvr/capture_demo_show.mvr"
-if [ -f "$mvr" ]; then
+source "$root/tests/cli/test_data.bash"
+if mvr=$(data_path gdtf/mvr/capture_demo_show.mvr); then
   "$haze" import-mvr "$mvr" -o "$tmp/capture.haze.json" >/dev/null 2>&1
   "$haze" sheet "$tmp/capture.haze.json" --list "MVR focus" --quality draft -o "$tmp/capture.pdf" >/dev/null 2>"$tmp/err"
   check "Capture sheet: $(head -2 "$tmp/err")" '[ -s "$tmp/capture.pdf" ]'
@@ -64,7 +64,7 @@ print(sum(1 for l in page.splitlines() if re.search(r"\d+(-\d+)? [A-Za-z].* @ 10
   check "Capture focus cue: its 76 fixtures in a few range lines ($lines)" '[ "$lines" -ge 1 ] && [ "$lines" -le 12 ]'
   check "Capture: no summarised fixtures" '! grep -qi "more fixtures\|and [0-9]* more" "$tmp/capture.txt"'
 else
-  echo "note: $mvr absent; the Capture part is left out"
+  want_data gdtf/mvr/capture_demo_show.mvr
 fi
 echo "$pass passed, $failed failed"
-[ $failed -eq 0 ]
+data_exit "$failed"
