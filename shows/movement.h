@@ -74,9 +74,14 @@ class MovementFollower {
 StageState movingStateAt(const Show& show, const ProfileSet& profiles, const CueList& list, size_t cueIndex,
                          double secondsSinceGo);
 
+// No head takes this long to arrive: past it, a command that is steady but for an effect (which
+// heads follow without ever settling) is as it will stay.
+inline constexpr double kMaxArrivalS = 60.0;
+
 // Samples commandAt(t) every kStepS from t = 0 (heads at rest on commandAt(0)) to atS and
 // returns the real stage at atS. Stops early once the command has stopped changing for good
-// (steady(t): no fade or follow after t) and every head has arrived. finalState as in
+// (steady(t): no fade or follow after t) and every head has arrived, or kMaxArrivalS after that
+// when an effect keeps the heads moving (so a full state, atS = 1e9, ends). finalState as in
 // MovementFollower::advance.
 template <class CommandAt, class Steady>
 StageState followCommand(const Show& show, const ProfileSet& profiles, CommandAt&& commandAt, Steady&& steady,
@@ -85,12 +90,16 @@ StageState followCommand(const Show& show, const ProfileSet& profiles, CommandAt
   StageState cmd = commandAt(0.0);
   f.reset(cmd, 0.0);
   StageState out = cmd;
+  double steadySinceS = -1.0;
   for (long k = 1;; ++k) {
     const double t = std::min(atS, static_cast<double>(k) * MovementFollower::kStepS);
     cmd = commandAt(t);
     out = f.advance(cmd, t, true, finalState);
     if (t >= atS) return out;
-    if (f.settled() && steady(t)) return cmd;
+    if (!steady(t)) continue;
+    if (f.settled()) return cmd;
+    if (steadySinceS < 0.0) steadySinceS = t;
+    else if (t - steadySinceS > kMaxArrivalS) return out;
   }
 }
 

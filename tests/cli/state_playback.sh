@@ -81,5 +81,15 @@ bad "$show" --cue 1 --bogus
 bad "$repo/tests/data/shows/no-such.haze.json" --cue 1 --json
 bad --cue 1
 
+# A full state (no --at) whose effect keeps the heads moving still returns: the demo's cue 4.5
+# circles the beams, so its heads never settle on the command.
+if timeout 60 "$haze" state "$repo/examples/demo/demo.haze.json" --cue 4.5 --json >"$tmp/effect.json" 2>&1 &&
+   grep -q '"101"' "$tmp/effect.json"; then
+  passed=$((passed + 1))
+else
+  fail=$((fail + 1))
+  echo "FAIL: haze state --cue 4.5 (a running effect, real movement) did not return within 60 s: $(head -c 200 "$tmp/effect.json")"
+fi
+
 echo "state_playback: $passed passed, $fail failed"
 [ $fail -eq 0 ]

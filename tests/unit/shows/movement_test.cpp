@@ -115,6 +115,21 @@ TEST(Movement, CueFadeArrivesAtTheFixturesSpeed) {
   EXPECT_FLOAT_EQ(movingStateAt(s.show, s.profiles, s.list, 1, 0.1).at(1).intensity, 1.0f);
 }
 
+// A full state (no --at) of a cue whose effect keeps moving the pan: the heads follow it without
+// ever settling, and the walk still ends (it used to step 1 ms at a time towards 1e9 s).
+TEST(Movement, AFullStateUnderARunningEffectEnds) {
+  OneFixture s(270.0f, 1080.0f);
+  const auto swinging = [](double t) {
+    StageState st;
+    st[1].panDeg = static_cast<float>(30.0 * std::sin(t));
+    st[1].intensity = 1.0f;
+    return st;
+  };
+  const StageState out = followCommand(s.show, s.profiles, swinging, [](double) { return true; }, 1e9);
+  ASSERT_TRUE(out.count(1));
+  EXPECT_LE(std::abs(out.at(1).panDeg), 30.5f);
+}
+
 // A DMX jump followed by advancing at irregular moments (as polls return) lands where fine
 // steps do: the motion does not depend on the frame rate.
 TEST(Movement, FollowerIsFrameRateIndependent) {
