@@ -35,6 +35,7 @@ bool acceptArtTimeCode(const uint8_t* data, size_t size);
 bool acceptOsc(const uint8_t* data, size_t size);
 bool acceptMidiTimecode(const uint8_t* data, size_t size);
 bool acceptMesh(const uint8_t* data, size_t size);  // .3ds / .glb / .gltf by the first bytes
+bool acceptQxf(const uint8_t* data, size_t size);   // a QLC+ fixture definition
 
 }  // namespace haze::fuzz
 

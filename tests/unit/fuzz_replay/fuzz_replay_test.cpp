@@ -140,6 +140,7 @@ TEST(FuzzReplay, ArtTimeCode) { replay("artnet_timecode", fuzz::acceptArtTimeCod
 TEST(FuzzReplay, Osc) { replay("osc", fuzz::acceptOsc, 5000, 13); }
 TEST(FuzzReplay, MidiTimecode) { replay("midi_timecode", fuzz::acceptMidiTimecode, 5000, 14); }
 TEST(FuzzReplay, Mesh) { replay("mesh", fuzz::acceptMesh, 500, 15); }
+TEST(FuzzReplay, Qxf) { replay("qxf", fuzz::acceptQxf, 3000, 16); }
 
 }  // namespace
 }  // namespace haze
