@@ -54,12 +54,18 @@ struct GdtfEntry {
 };
 
 // A GDTF that says nothing haze can draw beyond a default beam: no wheels, and every channel of
-// every mode read past (Capture's stubs name them Dimmer1..n).
+// every mode read past or one of the numbered dimmers Capture's stubs name every slot with
+// (Dimmer1..n, read as the fixture's dimmers: fixtures/gdtf_dmx.cpp).
 bool isStubGdtf(const Profile& p) {
   if (!p.goboWheels.empty() || !p.colorWheels.empty() || !p.prisms.empty()) return false;
+  const auto numberedDimmer = [](const std::string& name) {
+    return name.size() > 6 && name.rfind("Dimmer", 0) == 0 &&
+           std::all_of(name.begin() + 6, name.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+  };
   for (const DmxMode& m : p.modes)
     for (const DmxChannel& c : m.channels)
-      if (c.attribute != DmxAttribute::None) return false;
+      if (c.attribute != DmxAttribute::None && !(c.attribute == DmxAttribute::Intensity && numberedDimmer(c.name)))
+        return false;
   return true;
 }
 
@@ -450,7 +456,7 @@ class MvrImporter {
         break;
       }
     if (!hit) {
-      out_.libraryMatches.push_back(what + ": a stub (no wheels, its channels read past), and no library fixture is named \"" +
+      out_.libraryMatches.push_back(what + ": a stub (no wheels, its channels Dimmer1..n), and no library fixture is named \"" +
                                     embedded.manufacturer + " " + embedded.name + "\" (" + std::to_string(library_->entries.size()) +
                                     " files indexed); kept");
       return;
