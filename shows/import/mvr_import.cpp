@@ -21,6 +21,7 @@
 
 #include "fixtures/fixture_library.h"
 #include "fixtures/gdtf.h"
+#include "fixtures/gdtf_dmx.h"
 #include "fixtures/core/zip_archive.h"
 #include "shows/import/mvr_camera.h"
 #include "shows/import/mvr_venue.h"
@@ -58,13 +59,9 @@ struct GdtfEntry {
 // (Dimmer1..n, read as the fixture's dimmers: fixtures/gdtf_dmx.cpp).
 bool isStubGdtf(const Profile& p) {
   if (!p.goboWheels.empty() || !p.colorWheels.empty() || !p.prisms.empty()) return false;
-  const auto numberedDimmer = [](const std::string& name) {
-    return name.size() > 6 && name.rfind("Dimmer", 0) == 0 &&
-           std::all_of(name.begin() + 6, name.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
-  };
   for (const DmxMode& m : p.modes)
     for (const DmxChannel& c : m.channels)
-      if (c.attribute != DmxAttribute::None && !(c.attribute == DmxAttribute::Intensity && numberedDimmer(c.name)))
+      if (c.attribute != DmxAttribute::None && !(c.attribute == DmxAttribute::Intensity && numberedDimmer(c.name) > 0))
         return false;
   return true;
 }
