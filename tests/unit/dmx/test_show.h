@@ -96,4 +96,14 @@ inline TestShow makeTestShow() {
   return t;
 }
 
+// A cue that sets fixture 101's intensity, with its fade and timecode ("" = none).
+inline Cue intensityCue(const char* number, float intensity, double fadeS = 0.0, const char* timecode = "") {
+  Cue c;
+  c.number = number;
+  c.fadeS = fadeS;
+  c.timecode = timecode;
+  c.values[101].intensity = intensity;
+  return c;
+}
+
 }  // namespace haze::test

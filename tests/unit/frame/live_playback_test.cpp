@@ -9,20 +9,12 @@
 namespace haze {
 namespace {
 
-Cue cue(const char* number, const char* timecode, float intensity) {
-  Cue c;
-  c.number = number;
-  c.timecode = timecode;
-  c.values[101].intensity = intensity;
-  return c;
-}
-
 test::TestShow timedShow() {
   test::TestShow t = test::makeTestShow();
   CueList l;
   l.name = "Main";
-  l.cues = {cue("1", "00:00:01:00", 0.2f), cue("2", "00:00:02:00", 0.4f), cue("3", "00:00:03:00", 0.6f),
-            cue("4", "", 0.8f)};
+  l.cues = {test::intensityCue("1", 0.2f, 0.0, "00:00:01:00"), test::intensityCue("2", 0.4f, 0.0, "00:00:02:00"),
+            test::intensityCue("3", 0.6f, 0.0, "00:00:03:00"), test::intensityCue("4", 0.8f)};
   t.show.cueLists.push_back(l);
   return t;
 }
@@ -138,7 +130,7 @@ TEST(LivePlayback, OscDrivesOtherListsByName) {
   test::TestShow t = timedShow();
   CueList specials;
   specials.name = "Specials";
-  specials.cues = {cue("1", "", 0.5f), cue("2", "", 0.1f)};
+  specials.cues = {test::intensityCue("1", 0.5f), test::intensityCue("2", 0.1f)};
   specials.cues[1].values[102].panDeg = 30.0f;
   t.show.cueLists.push_back(specials);
   LivePlayback p(t.show, t.profiles, &t.show.cueLists[0]);

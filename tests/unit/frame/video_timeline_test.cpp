@@ -11,21 +11,13 @@
 namespace haze {
 namespace {
 
-Cue cue(const char* number, float intensity, double fadeS, const char* timecode = "") {
-  Cue c;
-  c.number = number;
-  c.fadeS = fadeS;
-  c.timecode = timecode;
-  c.values[101].intensity = intensity;
-  return c;
-}
-
 // Cue 1 snaps to 0.2; cue 2 fades to 0.8 in 2 s; cue 3 snaps to 0.
 test::TestShow threeCues() {
   test::TestShow t = test::makeTestShow();
   CueList l;
   l.name = "Main";
-  l.cues = {cue("1", 0.2f, 0.0, "00:00:01:00"), cue("2", 0.8f, 2.0, "00:00:02:00"), cue("3", 0.0f, 0.0)};
+  l.cues = {test::intensityCue("1", 0.2f, 0.0, "00:00:01:00"), test::intensityCue("2", 0.8f, 2.0, "00:00:02:00"),
+            test::intensityCue("3", 0.0f)};
   t.show.cueLists.push_back(l);
   return t;
 }
