@@ -4,6 +4,7 @@
 // haze render SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] ... -o OUT (shows/frame/list_plays.h)
 // haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--from CUE] [--to CUE] [--fps N]
 //                  [--hold S] [--duration S] [--codec NAME] [--progress] [--timecode START] (docs/output.md)
+//                  [--frames A-B] [--resume] (a part of an image sequence, for a render farm)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -34,7 +35,8 @@ constexpr const char* kUsage =
     "                   -o OUT.png|OUT.pfm|OUT.exr (one image) | -o DIR/ (with --all-cues)\n"
     "       haze render SHOW --video OUT.mp4|OUT-%05d.png|OUT-%05d.exr [--list NAME] [--from CUE] [--to CUE]\n"
     "                   [--fps N] [--hold S] [--duration S] [--codec NAME] [--caption] [--progress]\n"
-    "                   [--timeline FILE.json | --timecode hh:mm:ss:ff] (and the options above)\n"
+    "                   [--timeline FILE.json | --timecode hh:mm:ss:ff] [--frames A-B] [--resume]\n"
+    "                   (and the options above)\n"
     "       haze render SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] -o OUT (and the options above)\n"
     "Without --cue the first cue is rendered; --at S renders S seconds after its GO.\n"
     "--play plays several cue lists at once, as haze state --play (docs/shows.md): intensity HTP,\n"
@@ -57,6 +59,10 @@ constexpr const char* kUsage =
     "on a jump to T (the last cue at or before T, its fade finished; the defaults before the first);\n"
     "with --video, timecode runs from T and cues fire at their times with their fades.\n"
     "--timecode-rate 24|25|30 (default 25): the frames of a timecode per second.\n"
+    "--frames A-B renders frames A to B (from 0) of an image sequence, each exactly as a run of the whole\n"
+    "video draws it (the timeline is played from frame 0, the exposure metered on the whole range), so\n"
+    "ranges rendered apart, on one machine or many (haze farm), join into the whole video. --resume\n"
+    "skips a frame whose file is already there and decodes completely; a cut-short one is redone.\n"
     "--progress reports progress on stderr even when it is not a terminal (it always is on one).\n"
     "--movement real|instant: pan, tilt and zoom at the fixtures' speeds (default) or at once (--at, --video).\n"
     "--cells separate|merged: one beam per cell (default), or a fixture's alike cells as one beam.\n"
@@ -80,7 +86,8 @@ int runRender(const Args& args) {
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
   bool allCues = false, progress = false, caption = false, noBodies = false, particlesOn = false, particlesOff = false;
-  std::string video, from, to, codec = "libx264", timelineFile, timecodeText, timecodeRate = "25";
+  std::string video, from, to, codec = "libx264", timelineFile, timecodeText, timecodeRate = "25", frameRange;
+  bool resume = false;
   double hold = 2.0, duration = 0.0;
   int fps = 25;
   std::vector<ListPlay> plays;
@@ -115,6 +122,8 @@ int runRender(const Args& args) {
       .number("--hold", hold, 0, 3600, "seconds 0..3600")
       .number("--duration", duration, 0, 86400, "seconds 0..86400")
       .text("--codec", codec, "an FFmpeg encoder name")
+      .text("--frames", frameRange, "frames A-B of the video, from 0")
+      .flag("--resume", resume)
       .flag("--progress", progress)
       .flag("--caption", caption)
       .flag("--no-bodies", noBodies)
@@ -134,6 +143,14 @@ int runRender(const Args& args) {
     return cli.usage("--video renders a cue range (--from, --to): -o, --all-cues, --cue and --at are for stills");
   if (video.empty() && (!from.empty() || !to.empty()))
     return cli.usage("--from and --to choose the cues of a --video");
+  std::optional<FrameRange> frames;
+  if (!frameRange.empty()) {
+    auto parsed = parseFrameRange(frameRange);
+    if (!parsed) return cli.usage(parsed.error().message);
+    frames = *parsed;
+  }
+  if ((frames || resume) && video.empty())
+    return cli.usage("--frames and --resume render part of a --video image sequence (OUT-%05d.png)");
   if (out.empty() && video.empty())
     return cli.usage("no output given: -o OUT.png|OUT.pfm|OUT.exr, -o DIR/ with --all-cues, or --video OUT.mp4");
   if (allCues && !cue.empty()) return cli.usage("--cue and --all-cues exclude each other");
@@ -201,7 +218,8 @@ int runRender(const Args& args) {
   };
 
   if (!video.empty()) {
-    VideoJob job{.codec = codec, .out = video, .progress = progress, .caption = caption};
+    VideoJob job{.codec = codec, .out = video, .progress = progress, .caption = caption, .frames = frames,
+                 .resume = resume};
     VideoPlan& plan = job.plan;
     plan.list = cueList;
     plan.to = cueList->cues.size() - 1;
@@ -234,6 +252,11 @@ int runRender(const Args& args) {
     const auto s = renderVideo(**session, *show, *profiles, job);
     if (!s) return fail(s.error().str());
     std::printf("%s\n", video.c_str());
+    // What a farm's task did, for its log: how much of its range it had to draw.
+    if (frames || resume)
+      std::printf("frames %s: %d, %d drawn, %d repeated, %d complete already\n",
+                  frames ? frameRange.c_str() : "all", s->frames, s->drawn, s->frames - s->drawn - s->skipped,
+                  s->skipped);
     return 0;
   }
 

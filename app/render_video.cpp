@@ -4,12 +4,11 @@
 #include <csignal>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
-#include <regex>
 
 #include "app/progress.h"
 #include "renderer/output/caption.h"
 #include "renderer/output/exr.h"
+#include "renderer/output/frame_files.h"
 #include "renderer/output/video_writer.h"
 #include "renderer/scene/image.h"
 
@@ -38,34 +37,7 @@ class InterruptGuard {
   void (*previousTerm_)(int);
 };
 
-const std::regex& framePattern() {
-  static const std::regex r("%0?[0-9]*d");
-  return r;
-}
-
-std::filesystem::path sequenceFile(const std::filesystem::path& pattern, int frame) {
-  const std::string name = pattern.filename().string();
-  std::smatch m;
-  std::regex_search(name, m, framePattern());
-  char number[32];
-  std::snprintf(number, sizeof number, m.str().c_str(), frame);
-  return pattern.parent_path() / (m.prefix().str() + number + m.suffix().str());
-}
-
 }  // namespace
-
-bool isImageSequence(const std::filesystem::path& out, std::string& error) {
-  const std::string name = out.filename().string();
-  if (name.find('%') == std::string::npos) return false;
-  const auto count = std::distance(std::sregex_iterator(name.begin(), name.end(), framePattern()), std::sregex_iterator());
-  const auto percents = std::count(name.begin(), name.end(), '%');
-  const std::string ext = out.extension().string();
-  if (count != 1 || percents != 1)
-    error = "an image sequence needs one frame number in its name, like OUT-%05d.png";
-  else if (ext != ".png" && ext != ".exr")
-    error = "an image sequence is .png or .exr (got '" + ext + "')";
-  return true;
-}
 
 Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const ProfileSet& profiles, const VideoJob& job) {
   const CueList& list = *job.plan.list;
@@ -76,6 +48,13 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
   std::string patternError;
   const bool sequence = isImageSequence(job.out, patternError);
   if (!patternError.empty()) return Error{job.out.string(), "", patternError};
+  if ((job.frames || job.resume) && !sequence)
+    return Error{job.out.string(), "", "--frames and --resume write part of an image sequence (OUT-%05d.png or .exr)"};
+  const FrameRange range = job.frames.value_or(FrameRange{0, frames - 1});
+  if (range.last >= frames)
+    return Error{job.out.string(), "", "--frames " + std::to_string(range.first) + "-" + std::to_string(range.last) +
+                                           ": this video has " + std::to_string(frames) + " frames (0-" +
+                                           std::to_string(frames - 1) + ")"};
   const bool exr = sequence && job.out.extension() == ".exr";
   // EXR frames are radiometric: no display particles unless --particles asked for them.
   if (exr && !options.particles) session.setParticles(false);
@@ -97,12 +76,18 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
   session.setHazers(timeline.hazers());
 
   StageState lastState;
+  bool havePicture = false;  // whether rgb or radiance holds lastState's picture
   std::vector<unsigned char> rgb;
   ImageRGB radiance;
-  int drawn = 0;
+  int drawn = 0, skipped = 0;
   InterruptGuard guard;
-  Progress progress("haze render", "frames", frames, job.progress);
-  for (int f = 0; f < frames; ++f) {
+  Progress progress("haze render", "frames", range.count(), job.progress);
+  // Every frame before the range is played but not drawn: the heads' travel, the effects and the
+  // timecode's firings are stepped from frame 0 (cheap, no GL), so frame A is the stage a whole
+  // run shows at A. The density field and the renderer keep nothing from one draw to the next
+  // that changes a picture (the field is simulated from 0 to the frame's time in fixed steps, the
+  // maps are cached by content), so a range's first draw equals the whole run's draw of it.
+  for (int f = 0; f <= range.last; ++f) {
     if (interrupted) {
       progress.finish();
       return Error{job.out.string(), "",
@@ -114,6 +99,15 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
       progress.finish();
       return Error{job.out.string(), "", played.error().message};
     }
+    if (f < range.first) continue;
+    const std::filesystem::path file = sequence ? sequenceFile(job.out, f) : std::filesystem::path();
+    if (job.resume && frameFileComplete(file)) {
+      // Written by an earlier run; the next frame drawn cannot reuse a picture this run never made.
+      havePicture = false;
+      ++skipped;
+      progress.step(f - range.first + 1);
+      continue;
+    }
     if (!played->fired.empty())
       std::fprintf(stderr, "haze render: timecode %s: %s\n", played->timecode->str().c_str(), played->fired.c_str());
     const double t = played->timeS;
@@ -122,13 +116,14 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
     // Frames of a hold (or of a delay) show an unchanged stage: the frame state is built from
     // the stage state alone, so the last picture is that frame exactly and is not drawn again.
     // A drifting density field changes every frame, whatever the stage does.
-    if (f == 0 || state != lastState || densityMoves(show.atmosphere) || particlesMove) {
+    if (!havePicture || state != lastState || densityMoves(show.atmosphere) || particlesMove) {
       if (Status s = session.draw(show, profiles, state, false, t); !s) return s.error();
       if (exr)
         radiance = session.radiance();
       else
         rgb = session.display(show);
       lastState = std::move(state);
+      havePicture = true;
       ++drawn;
     }
     std::vector<unsigned char> shown;
@@ -146,21 +141,21 @@ Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const P
       char comment[256];
       std::snprintf(comment, sizeof comment, "haze render --video of %s, cue list %s, frame %d at %.3f s, cue %s",
                     show.file.filename().string().c_str(), list.name.c_str(), f, t, cue.number.c_str());
-      if (Status s = writeExrWarning(radiance, sequenceFile(job.out, f),
+      if (Status s = writeExrWarning(radiance, file,
                                      {.pixel = options.exrPixel, .comment = comment});
           !s)
         return s.error();
     } else if (sequence) {
-      if (Status s = writePng8(frame, options.width, options.height, sequenceFile(job.out, f)); !s) return s.error();
+      if (Status s = writePng8(frame, options.width, options.height, file); !s) return s.error();
     } else if (Status s = writer->addFrame(frame); !s) {
       return s.error();
     }
-    progress.step(f + 1);
+    progress.step(f - range.first + 1);
   }
   progress.finish();
   if (writer)
     if (Status s = writer->finish(); !s) return s.error();
-  return VideoStats{.frames = frames, .drawn = drawn};
+  return VideoStats{.frames = range.count(), .drawn = drawn, .skipped = skipped};
 }
 
 }  // namespace haze

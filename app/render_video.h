@@ -5,9 +5,11 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "app/render_session.h"
+#include "shows/frame/frame_sequence.h"
 #include "shows/frame/video_timeline.h"
 #include "shows/show.h"
 
@@ -19,17 +21,20 @@ struct VideoJob {
   std::filesystem::path out;
   bool progress = false;    // --progress: report even when stderr is not a terminal
   bool caption = false;     // burn "cue N label, t s" into video and PNG frames
+  // --frames A-B: only these frames of the sequence, each exactly as the whole run draws it
+  // (docs/output.md, "Rendering on a cluster"); none: every frame.
+  std::optional<FrameRange> frames;
+  // --resume: a frame whose file is already there and complete (renderer/output/frame_files.h)
+  // is not drawn again.
+  bool resume = false;
 };
-
-// True when `out` names an image sequence: a printf-style frame number (%d, %05d) and .png or
-// .exr. A '%' that is not one such number is an error (named in `error`).
-bool isImageSequence(const std::filesystem::path& out, std::string& error);
 
 // Renders the job; errors are one line (file and reason) and leave no file under the video's
 // name. Ctrl-C stops between frames and is reported as an error ("interrupted").
 struct VideoStats {
-  int frames = 0;
-  int drawn = 0;  // the others repeat an unchanged stage (holds, delays)
+  int frames = 0;   // of the range rendered (--frames), all of them without it
+  int drawn = 0;    // the others repeat an unchanged stage (holds, delays) or were there (--resume)
+  int skipped = 0;  // complete already (--resume)
 };
 
 Result<VideoStats> renderVideo(RenderSession& session, const Show& show, const ProfileSet& profiles, const VideoJob& job);
