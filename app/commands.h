@@ -28,6 +28,7 @@ int runLive(const Args& args);          // app/cmd_live.cpp
 int runImportMvr(const Args& args);     // app/cmd_import_mvr.cpp
 int runExportMvr(const Args& args);     // app/cmd_export_mvr.cpp   (haze export-mvr SHOW -o RIG.mvr)
 int runSheet(const Args& args);         // app/cmd_sheet.cpp     (haze sheet SHOW -o SHEET.pdf)
+int runFarm(const Args& args);          // app/cmd_farm.cpp      (haze farm slurm|status|encode)
 int runVersion(const Args& args);       // app/cmd_version.cpp   (haze --version)
 int runGui(const Args& args);           // app/gui/ (haze, haze open SHOW)
 

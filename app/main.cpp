@@ -20,6 +20,7 @@ constexpr const char* kHelp =
     "                   -o OUT.(png|pfm|exr) | -o DIR/ (with --all-cues)     stills\n"
     "  haze render SHOW --video OUT.mp4|OUT-%05d.png [--from CUE] [--to CUE] [--fps N] [--hold S]\n"
     "                   [--duration S] [--caption] [--timeline FILE.json | --timecode hh:mm:ss:ff]\n"
+    "                   [--frames A-B] [--resume]      frames A..B of an image sequence, as one run makes them\n"
     "  haze render SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] -o OUT\n"
     "  haze state SHOW --cue N [--at S] [--list NAME] [--follow] [--json]   every fixture's state\n"
     "  haze state SHOW --play LIST=CUE[@MASTER][+GO_S] [--play ...] [--at S] [--json]\n"
@@ -36,6 +37,10 @@ constexpr const char* kHelp =
     "  haze sheet SHOW -o SHEET.pdf [--list NAME] [--camera NAME]... [--quality Q]   the review sheet\n"
     "  haze bench [--fixtures N | --show SHOW [--cue N]] [--width W --height H] [--quality Q] [--json]\n"
     "  haze compare IMAGE.pfm REFERENCE.pfm [--threshold F] [--max-error E] [--json]   accuracy metric\n"
+    "  haze farm slurm SHOW --video OUT.mp4 [--chunk N] [--quality Q] [--partition P] [--submit]\n"
+    "                                       the video on a Slurm cluster: a job array, then the encode\n"
+    "  haze farm status FOLDER              which frames of a farm's folder are missing\n"
+    "  haze farm encode FOLDER              every frame there and complete, encoded into the video\n"
     "  haze --version                       version, git commit, the OpenGL the renderer gets\n"
     "Each command takes --help for all its options.\n"
     "Every command that reads a show checks it as haze validate does and refuses it with the same lines.\n"
@@ -67,6 +72,7 @@ int main(int argc, char** argv) {
   const std::string cmd = argv[1];
   const haze::Args rest(argv + 2, argv + argc);
   if (cmd == "render") return haze::runRender(rest);
+  if (cmd == "farm") return haze::runFarm(rest);
   if (cmd == "state") return haze::runState(rest);
   if (cmd == "validate") return haze::runValidate(rest);
   if (cmd == "fixture") return haze::runFixture(rest);
