@@ -6,7 +6,7 @@ JOBS       ?= $(shell nproc)
 DEMO       := examples/demo/demo.haze.json
 HAZE       := $(BUILD)/app/haze
 
-.PHONY: all deps configure build build-haze run test test-fast test-asan node-tools fuzz soak gui-parallel clean
+.PHONY: all deps configure build build-haze run test test-fast test-asan node-tools fuzz soak farm-test gui-parallel clean
 
 all: build
 
@@ -73,6 +73,12 @@ soak: build node-tools
 	bash tests/gui/kill_save.sh $(HAZE) . 50
 	bash tests/cli/live_soak.sh $(HAZE) . 600
 	$(MAKE) gui-parallel
+
+# The video of the demo on a real one-node Slurm cluster on this machine (tests/farm/slurm_farm.sh):
+# installs Slurm and munge, starts their daemons, renders in chunks, compares with one machine's
+# video, kills a task and resubmits; stops every daemon it started. Root only; minutes.
+farm-test: build-haze
+	bash tests/farm/slurm_farm.sh $(HAZE) .
 
 GUI_COPIES ?= 20
 GUI_TESTS  ?=

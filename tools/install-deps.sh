@@ -15,6 +15,12 @@ packages=(
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang-14 libclang-rt-14-dev)
 fi
+# `make farm-test` (tests/farm/slurm_farm.sh) runs a one-node Slurm cluster on this machine:
+# the controller, the node daemon, the client commands and munge for their authentication.
+# Only that target asks for them, so `make test` never installs a cluster manager.
+if [ "${1:-}" = "--farm" ]; then
+  packages+=(slurmctld slurmd slurm-client munge)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
