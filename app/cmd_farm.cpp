@@ -43,6 +43,17 @@ std::filesystem::path absolute(const std::string& path) {
   return (ec ? std::filesystem::path(path) : a).lexically_normal();
 }
 
+// Seconds as the command line would give them ("2", "12.5"), not std::to_string's "2.000000",
+// with as many digits as the same double needs when the task reads it back.
+std::string secondsText(double s) {
+  char text[32];
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, s);
+    if (std::strtod(text, nullptr) == s) break;
+  }
+  return text;
+}
+
 std::filesystem::path thisProgram() {
   std::error_code ec;
   const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
@@ -118,9 +129,9 @@ int runSlurm(const Args& args) {
   job.haze = hazePath.empty() ? thisProgram() : std::filesystem::path(hazePath);
   job.folder = folder;
   job.renderArgs = {"--list", cueList->name, "--from", cueList->cues[plan.from].number, "--to",
-                    cueList->cues[plan.to].number, "--fps", std::to_string(fps), "--hold", std::to_string(hold),
+                    cueList->cues[plan.to].number, "--fps", std::to_string(fps), "--hold", secondsText(hold),
                     "--width", std::to_string(width), "--height", std::to_string(height), "--quality", quality};
-  if (duration > 0) job.renderArgs.insert(job.renderArgs.end(), {"--duration", std::to_string(duration)});
+  if (duration > 0) job.renderArgs.insert(job.renderArgs.end(), {"--duration", secondsText(duration)});
   if (!camera.empty()) job.renderArgs.insert(job.renderArgs.end(), {"--camera", camera});
   job.partition = partition;
   job.cpusPerTask = cpus;
