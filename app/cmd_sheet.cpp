@@ -1,7 +1,7 @@
-// `haze sheet SHOW -o SHEET.pdf [--list NAME] [--camera NAME]... [--quality Q] [--progress]`: the
-// review sheet for the board operator (docs/output.md): per cue its number, label, timing, a
+// `haze sheet SHOW -o SHEET.pdf|SHEET.html [--list NAME] [--camera NAME]... [--quality Q] [--progress]`:
+// the review sheet for the board operator (docs/output.md): per cue its number, label, timing, a
 // thumbnail from each camera and what changes from the cue before (app/sheet_changes.h); then
-// the patch, by universe and address.
+// the patch, by universe and address. One SheetDoc, written as a PDF or as one HTML file.
 #include <algorithm>
 #include <cstdio>
 #include <tuple>
@@ -16,6 +16,7 @@
 #include "app/render_session.h"
 #include "app/sheet_changes.h"
 #include "shows/frame/state_json.h"
+#include "renderer/output/sheet_html.h"
 #include "renderer/output/sheet_pdf.h"
 #include "shows/hazer_levels.h"
 #include "shows/playback.h"
@@ -24,11 +25,12 @@ namespace haze {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: haze sheet SHOW -o SHEET.pdf [--list NAME] [--camera NAME]... [--quality Q] [--progress]\n"
+    "usage: haze sheet SHOW -o SHEET.pdf|SHEET.html [--list NAME] [--camera NAME]... [--quality Q] [--progress]\n"
     "  One row per cue of the list (default: the first): number, label, fade, delay, follow, a\n"
     "  thumbnail from each --camera (default: the show's first; at most 3), and the fixtures that\n"
     "  change from the cue before and to what, as ranges of one type (\"11-20 Alpha Spot @ 70 %,\n"
-    "  palette Blue, gobo Spokes\"); the patch by universe and address on its own page. A4 landscape.\n";
+    "  palette Blue, gobo Spokes\"); the patch by universe and address on its own page. A4 landscape.\n"
+    "  -o NAME.html writes the same sheet as one HTML page, its thumbnails embedded as PNG data.\n";
 
 constexpr int kMaxCameras = 3;
 constexpr int kThumbPixelsWide = 320, kThumbPixelsHigh = 180;  // twice the printed size
@@ -46,7 +48,7 @@ int runSheet(const Args& args) {
   std::vector<std::string> cameras;
   bool progress = false;
   CommandLine cli("haze sheet", kUsage);
-  cli.text("-o|--output", out, "a .pdf file")
+  cli.text("-o|--output", out, "a .pdf or .html file")
       .text("--list", list, "a cue list name")
       .custom("--camera", "a camera name", [&cameras](const std::string& v) {
         cameras.push_back(v);
@@ -57,8 +59,10 @@ int runSheet(const Args& args) {
       .positional(showPath, "show");
   if (auto done = cli.parse(args)) return *done;
   const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
-  if (out.empty()) return cli.usage("no output given: -o SHEET.pdf");
-  if (std::filesystem::path(out).extension() != ".pdf") return cli.usage(out + ": the sheet is a PDF (-o SHEET.pdf)");
+  if (out.empty()) return cli.usage("no output given: -o SHEET.pdf or -o SHEET.html");
+  const std::string extension = std::filesystem::path(out).extension().string();
+  if (extension != ".pdf" && extension != ".html")
+    return cli.usage(out + ": the sheet is a PDF or an HTML page (-o SHEET.pdf, -o SHEET.html)");
   if (cameras.size() > kMaxCameras)
     return cli.usage("at most " + std::to_string(kMaxCameras) + " cameras fit a row (got " + std::to_string(cameras.size()) + ")");
   auto q = parseQuality(quality);
@@ -125,7 +129,7 @@ int runSheet(const Args& args) {
                          .universe = f.patch ? std::to_string(f.patch->universe) : "-",
                          .address = f.patch ? std::to_string(f.patch->address) : "unpatched"});
   }
-  if (Status s = writeSheetPdf(doc, out); !s) return fail(s.error().str());
+  if (Status s = extension == ".html" ? writeSheetHtml(doc, out) : writeSheetPdf(doc, out); !s) return fail(s.error().str());
   std::printf("%s\n", out.c_str());
   return 0;
 }

@@ -34,7 +34,7 @@ constexpr const char* kHelp =
     "                 [--duration S] [--on-loss hold|blackout] [--state-json OUT] [--render OUT.png]\n"
     "                 [--osc PORT] [--timecode] [--mtc [--mtc-from C:P]] [--cue-list NAME]\n"
     "                 [--record-cue N [--label L]] [--no-sync] [--no-preview]   DMX in from a console\n"
-    "  haze sheet SHOW -o SHEET.pdf [--list NAME] [--camera NAME]... [--quality Q]   the review sheet\n"
+    "  haze sheet SHOW -o SHEET.pdf|SHEET.html [--list NAME] [--camera NAME]... [--quality Q]   the review sheet\n"
     "  haze bench [--fixtures N | --show SHOW [--cue N]] [--width W --height H] [--quality Q] [--json]\n"
     "  haze compare IMAGE.pfm REFERENCE.pfm [--threshold F] [--max-error E] [--json]   accuracy metric\n"
     "  haze farm slurm SHOW --video OUT.mp4 [--chunk N] [--quality Q] [--partition P] [--submit]\n"

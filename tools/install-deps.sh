@@ -10,6 +10,7 @@ packages=(
   libopenexr-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libcairo2-dev
   xvfb xdotool x11-utils imagemagick ffmpeg poppler-utils libxml2-utils
   qlcplus-data
+  chromium  # tests/cli/sheet_html.sh loads the HTML review sheet in it (headless, file:// only)
 )
 # `make fuzz` (tools/fuzz.sh) asks for libFuzzer too: clang and its runtime.
 if [ "${1:-}" = "--fuzz" ]; then

@@ -30,6 +30,7 @@
 
 #include "shows/frame/atmosphere_field.h"
 #include "app/gui/desktop_dialog.h"
+#include "shows/edit/label_layout.h"
 #include "shows/edit/show_document.h"
 #include "shows/movement.h"
 #include "app/render_job.h"
@@ -78,6 +79,7 @@ struct Gui {
   // Heads at the fixtures' own speeds (docs/movement.md); View > Real movement turns it off.
   bool realMovement = true;
   bool showBodies = true;  // View > Fixture bodies (docs/fixtures.md, "Bodies")
+  bool showNumbers = true;  // View > Fixture numbers: each marker's id beside it
   std::unique_ptr<MovementFollower> heads;
   const ShowDocument* headsDoc = nullptr;  // the document `heads` follows
 
@@ -120,6 +122,15 @@ struct Gui {
   bool focusCommand = false;
   std::string commandResult, commandOffered;
   bool commandError = false;
+
+  // Fixture identity (docs/gui-commands.md, "Fixture identity"): the Fixtures and Patch tabs
+  // filter (one field, shared, so a filter typed in one holds in the other); what the last frame
+  // drew, for the tests' probe (HAZE_GUI_PROBE_FILE, gui_app.cpp): the rows each tab listed, the
+  // selected fixtures' label boxes in the viewport, and the filter field's place on screen.
+  char fixtureFilter[128] = "";
+  std::vector<int> fixtureRows, patchRows;
+  std::vector<PlacedLabel> placedLabels;
+  Rect filterField;
 
   // Cues panel: the cue picked for editing (not the one on stage).
   std::optional<size_t> cueCursor;
@@ -178,6 +189,8 @@ void drawShowPanel(Gui& gui);  // the left panel's tabs
 void drawCuesTab(Gui& gui);
 void drawPlaybacksTab(Gui& gui);  // every cue list: GO, BACK, master
 void drawFixturesTab(Gui& gui);
+// The filter field both fixture tabs show; returns what it lists (label_layout.h listedFixtures).
+std::vector<const FixtureDef*> drawFixtureFilter(Gui& gui);
 void drawLibraryTab(Gui& gui);
 void drawPatchTab(Gui& gui);
 void drawAtmosphereTab(Gui& gui);

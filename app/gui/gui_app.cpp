@@ -211,6 +211,41 @@ void publishFrameCount(int frame) {
   }
 }
 
+// With HAZE_GUI_PROBE_FILE set, what the last frame drew that a screenshot cannot tell a test
+// exactly, as one JSON object rewritten (atomically) after every frame, before the frame count:
+// whether View > Fixture numbers is on, the rows the Fixtures and Patch tabs listed (ids, in order; only the visible tab's are
+// current), the filter field's rectangle, and the selected fixtures' label boxes in the viewport
+// (window pixels) with their markers and whether each was pushed off its place (tests/gui/fixture_identity.sh).
+void publishProbe(const Gui& gui) {
+  static const char* path = std::getenv("HAZE_GUI_PROBE_FILE");
+  if (!path || !*path) return;
+  const auto ids = [](const std::vector<int>& v) {
+    std::string out;
+    for (int id : v) out += (out.empty() ? "" : ",") + std::to_string(id);
+    return "[" + out + "]";
+  };
+  std::string labels;
+  for (const PlacedLabel& l : gui.placedLabels) {
+    char one[200];
+    std::snprintf(one, sizeof one,
+                  "%s{\"fixture\":%d,\"anchor\":[%.1f,%.1f],\"x\":%.1f,\"y\":%.1f,\"w\":%.1f,\"h\":%.1f,\"moved\":%s}",
+                  labels.empty() ? "" : ",", l.fixture, l.anchor.x, l.anchor.y, l.box.x, l.box.y, l.box.w, l.box.h,
+                  l.moved ? "true" : "false");
+    labels += one;
+  }
+  char filter[160];
+  const Rect& r = gui.filterField;
+  std::snprintf(filter, sizeof filter, "{\"x\":%.1f,\"y\":%.1f,\"w\":%.1f,\"h\":%.1f}", r.x, r.y, r.w, r.h);
+  const std::string text = "{\"numbers\":" + std::string(gui.showNumbers ? "true" : "false") +
+                           ",\"fixture_rows\":" + ids(gui.fixtureRows) + ",\"patch_rows\":" + ids(gui.patchRows) +
+                           ",\"filter_field\":" + filter + ",\"labels\":[" + labels + "]}\n";
+  const std::string tmp = std::string(path) + ".tmp";
+  if (std::FILE* f = std::fopen(tmp.c_str(), "w")) {
+    std::fputs(text.c_str(), f);
+    if (std::fclose(f) == 0) std::rename(tmp.c_str(), path);
+  }
+}
+
 // Every panel of one frame, from input to ImGui's draw lists.
 void drawPanels(Gui& gui, int winW, int winH) {
   ImGui_ImplOpenGL3_NewFrame();
@@ -513,6 +548,7 @@ int runGui(const Args& args) {
     }
     glfwSwapBuffers(gui.window);
     pacing.swapped(gui, renderers);
+    publishProbe(gui);
     publishFrameCount(frame);
   }
 

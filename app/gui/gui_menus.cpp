@@ -167,6 +167,7 @@ void drawMenuBar(Gui& gui) {
     // docs/movement.md: off, heads jump to every value at once.
     ImGui::MenuItem("Real movement speeds", nullptr, &gui.realMovement);
     ImGui::MenuItem("Fixture bodies", nullptr, &gui.showBodies);
+    ImGui::MenuItem("Fixture numbers", nullptr, &gui.showNumbers);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

@@ -1,5 +1,6 @@
-// The patch table: universe, address, mode and footprint of every fixture; overlapping or
-// out-of-range footprints are shown in red (patchConflicts, show_document.h). Universe 0
+// The patch table: every fixture by id (narrowed by the filter field the Fixtures tab shares),
+// its universe.address as a desk writes it, then universe, address, mode and footprint to edit;
+// overlapping or out-of-range footprints are shown in red (patchConflicts, show_document.h). Universe 0
 // unpatches. Typed numbers apply on Enter through patchFixture, which refuses a patch that would
 // overlap (the status line says why).
 #include <cstdio>
@@ -15,23 +16,29 @@ void drawPatchTab(Gui& gui) {
   else ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%zu fixture(s) overlap or run past 512", conflicts.size());
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit |
                                 ImGuiTableFlags_BordersInnerV;
-  if (!ImGui::BeginTable("patch", 5, flags, ImVec2(0, 0))) return;
+  // Copies: a command may change the fixture list while the table is drawn.
+  std::vector<FixtureDef> fixtures;
+  for (const FixtureDef* f : drawFixtureFilter(gui)) fixtures.push_back(*f);
+  gui.patchRows.clear();
+  if (!ImGui::BeginTable("patch", 6, flags, ImVec2(0, 0))) return;
   ImGui::TableSetupScrollFreeze(0, 1);
   ImGui::TableSetupColumn("Fixture");
+  ImGui::TableSetupColumn("U.Addr");
   ImGui::TableSetupColumn("Univ");
   ImGui::TableSetupColumn("Addr");
   ImGui::TableSetupColumn("Mode");
   ImGui::TableSetupColumn("Ch");
   ImGui::TableHeadersRow();
-  // Copies: a command may change the fixture list while the table is drawn.
-  const std::vector<FixtureDef> fixtures = doc.show().fixtures;
   for (const FixtureDef& f : fixtures) {
+    gui.patchRows.push_back(f.id);
     ImGui::PushID(f.id);
     ImGui::TableNextRow();
     if (conflicts.count(f.id)) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(140, 30, 30, 255));
     ImGui::TableNextColumn();
     ImGui::Text("%d", f.id);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f.name.c_str());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(patchText(f).c_str());
     int universe = f.patch ? f.patch->universe : 0, address = f.patch ? f.patch->address : 0;
     ImGui::TableNextColumn();
     // Enter applies a typed number (a half-typed address would collide on the way).

@@ -5,6 +5,8 @@
 // venue point under the pointer, focus to point as it moves), and the overlay: a marker per fixture, the
 // selection highlighted with its name and beam axis, and the point under the pointer while
 // placing or focusing. The picking itself is shows/edit/picking.h (tested without a window).
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 
@@ -235,6 +237,24 @@ void drawOverlay(Gui& gui, const ViewCamera& view, std::optional<VenueHit> hover
   dl->PushClipRect(ImVec2(vp.x, vp.y), ImVec2(vp.x + vp.w, vp.y + vp.h), true);
   const ShowDocument& doc = *gui.doc;
   auto toScreen = [&](glm::vec2 p) { return ImVec2(vp.x + p.x, vp.y + p.y); };
+  // The selected fixtures' labels, "101 Spot 1", laid out so that none covers another
+  // (label_layout.h): a row of adjacent spots would otherwise print their names over each other.
+  std::vector<const FixtureDef*> byId;
+  for (const FixtureDef& f : doc.show().fixtures) byId.push_back(&f);
+  std::stable_sort(byId.begin(), byId.end(), [](const FixtureDef* a, const FixtureDef* b) { return a->id < b->id; });
+  std::vector<LabelRequest> labels;
+  std::vector<std::string> labelTexts;
+  for (const FixtureDef* f : byId) {
+    if (std::find(doc.selection.begin(), doc.selection.end(), f->id) == doc.selection.end()) continue;
+    const auto s = view.project(f->position);
+    if (!s) continue;
+    std::string text = gui.showNumbers ? std::to_string(f->id) + (f->name.empty() ? "" : " " + f->name) : f->name;
+    if (text.empty()) continue;
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    labels.push_back({.fixture = f->id, .anchor = glm::vec2(vp.x, vp.y) + *s, .sizePx = {size.x + 4.0f, size.y + 2.0f}});
+    labelTexts.push_back(std::move(text));
+  }
+  gui.placedLabels = placeLabels(labels);
   for (const FixtureDef& f : doc.show().fixtures) {
     const auto s = view.project(f.position);
     if (!s) continue;
@@ -249,11 +269,24 @@ void drawOverlay(Gui& gui, const ViewCamera& view, std::optional<VenueHit> hover
         if (b) dl->AddCircle(toScreen(*b), 5.0f, IM_COL32(255, 220, 40, 220), 12, 1.5f);
       }
       dl->AddCircle(at, 9.0f, IM_COL32(255, 220, 40, 255), 16, 2.5f);
-      dl->AddText(ImVec2(at.x + 11, at.y - 7), IM_COL32(255, 230, 120, 255), f.name.c_str());
+    } else if (gui.showNumbers) {
+      // The id under an unselected marker, small and dim: which fixture is which, at a glance.
+      const std::string id = std::to_string(f.id);
+      const float size = ImGui::GetFontSize() * 0.85f;
+      const ImVec2 extent = ImGui::GetFont()->CalcTextSizeA(size, FLT_MAX, 0.0f, id.c_str());
+      dl->AddText(ImGui::GetFont(), size, ImVec2(at.x - extent.x * 0.5f, at.y + 6.0f), IM_COL32(220, 220, 230, 200), id.c_str());
     }
     const ImU32 fill = selected ? IM_COL32(255, 220, 40, 255) : programmed ? IM_COL32(255, 140, 40, 230) : IM_COL32(200, 200, 210, 200);
     dl->AddCircleFilled(at, 4.0f, fill, 12);
     dl->AddCircle(at, 4.5f, IM_COL32(20, 20, 20, 200), 12, 1.0f);
+  }
+  for (size_t i = 0; i < gui.placedLabels.size(); ++i) {
+    const PlacedLabel& l = gui.placedLabels[i];
+    const ImVec2 min(l.box.x, l.box.y), max(l.box.x + l.box.w, l.box.y + l.box.h);
+    // A label pushed off its marker's side keeps a line to it, so it still names the right one.
+    if (l.moved) dl->AddLine(ImVec2(l.anchor.x + 5.0f, l.anchor.y), ImVec2(min.x, (min.y + max.y) * 0.5f), IM_COL32(255, 220, 40, 160), 1.0f);
+    dl->AddRectFilled(min, max, IM_COL32(20, 20, 24, 190), 2.0f);
+    dl->AddText(ImVec2(min.x + 2.0f, min.y + 1.0f), IM_COL32(255, 230, 120, 255), labelTexts[i].c_str());
   }
   if (hover) {
     if (const auto s = view.project(hover->surface.positionM)) {

@@ -74,4 +74,14 @@ Status writePng8(const std::vector<unsigned char>& rgb8, int width, int height,
   return commit(tmp, file);
 }
 
+std::string encodePng8(const std::vector<unsigned char>& rgb8, int width, int height) {
+  if (width <= 0 || height <= 0 || rgb8.size() != static_cast<size_t>(width) * height * 3) return {};
+  std::string bytes;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &bytes, width, height, 3, rgb8.data(), width * 3)) return {};
+  return bytes;
+}
+
 }  // namespace haze

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -24,5 +25,8 @@ Status writePfm(const ImageRGB& image, const std::filesystem::path& file);
 Result<ImageRGB> readPfm(const std::filesystem::path& file);
 Status writePng8(const std::vector<unsigned char>& rgb8, int width, int height,
                  const std::filesystem::path& file);
+// The same PNG as writePng8 writes, in memory (the HTML review sheet embeds its thumbnails).
+// Empty when rgb8 does not hold width x height x 3 bytes.
+std::string encodePng8(const std::vector<unsigned char>& rgb8, int width, int height);
 
 }  // namespace haze

@@ -53,6 +53,31 @@ Result<int> bindUdp(uint32_t addressHostOrder, int port, const char* what) {
   return fd;
 }
 
+// Whether another socket already holds address:port in a way that shares its unicast datagrams
+// with ours: a probe bound without SO_REUSEADDR and SO_REUSEPORT fails with EADDRINUSE exactly
+// when a socket on the same port has the same address, or either side is 0.0.0.0 (a socket on
+// another address of the same port, 127.0.0.2 beside 127.0.0.1, shares nothing and is no
+// conflict). The kernel's own rule, so it holds in network namespaces, for other users'
+// sockets and where /proc is not mounted. Any other failure says nothing about sharing.
+bool portTaken(uint32_t addressHostOrder, int port) {
+  const int fd = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) return false;
+  sockaddr_in sa{};
+  sa.sin_family = AF_INET;
+  sa.sin_port = htons(static_cast<uint16_t>(port));
+  sa.sin_addr.s_addr = htonl(addressHostOrder);
+  const bool taken = ::bind(fd, reinterpret_cast<sockaddr*>(&sa), sizeof sa) != 0 && errno == EADDRINUSE;
+  ::close(fd);
+  return taken;
+}
+
+std::string sharedPortWarning(uint32_t addressHostOrder, int port, const char* what) {
+  return std::string("warning: another program already listens on ") + ipString(addressHostOrder) + ":" +
+         std::to_string(port) + ": " + what + " sent unicast to this address reaches only one of the two (the " +
+         "kernel picks which); give haze an address of its own with --bind, or send sACN multicast (docs/live.md, " +
+         "\"Sharing the ports\")";
+}
+
 int boundPort(int fd) {
   sockaddr_in sa{};
   socklen_t len = sizeof sa;
@@ -78,6 +103,11 @@ Result<std::unique_ptr<UdpReceiver>> UdpReceiver::open(const UdpReceiverOptions&
   r->bindAddress_ = address;
   r->artNetUniverses_ = o.artNetUniverses;
   r->answerArtPoll_ = o.answerArtPoll;
+  // Port 0 asks for a free port, which no one else holds.
+  if (o.artNet && o.artNetPort != 0 && portTaken(address, o.artNetPort))
+    r->notes_.push_back(sharedPortWarning(address, o.artNetPort, "Art-Net"));
+  if (o.sacn && o.sacnPort != 0 && portTaken(address, o.sacnPort))
+    r->notes_.push_back(sharedPortWarning(address, o.sacnPort, "sACN"));
   if (o.artNet) {
     auto fd = bindUdp(address, o.artNetPort, "Art-Net");
     if (!fd) return fd.error();

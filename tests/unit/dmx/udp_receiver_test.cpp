@@ -1,5 +1,6 @@
 // UdpReceiver on loopback: a port already held by another receiver (olad, a second visualiser on
-// the same laptop) can still be opened, and the ports a receiver reports are the ones it bound.
+// the same laptop) can still be opened, with a warning that unicast is then split, and the
+// ports a receiver reports are the ones it bound.
 #include <gtest/gtest.h>
 
 #include "shows/dmx/udp_receiver.h"
@@ -21,6 +22,20 @@ TEST(UdpReceiver, SharesItsPortsWithAnotherReceiver) {
   ASSERT_TRUE(second.ok()) << "a second program on the same ports: " << second.error().str();
   EXPECT_EQ((*second)->artNetPort(), o.artNetPort);
   EXPECT_EQ((*second)->sacnPort(), o.sacnPort);
+  // The first had the ports to itself (port 0 is never shared); the second says, once a port,
+  // that unicast now reaches only one of the two.
+  EXPECT_TRUE((*first)->notes().empty());
+  const auto& notes = (*second)->notes();
+  ASSERT_EQ(notes.size(), 2u);
+  const std::string art = "127.0.0.1:" + std::to_string(o.artNetPort) + ": Art-Net sent unicast to this address reaches only one";
+  const std::string sacn = "127.0.0.1:" + std::to_string(o.sacnPort) + ": sACN sent unicast to this address reaches only one";
+  EXPECT_NE(notes[0].find(art), std::string::npos) << notes[0];
+  EXPECT_NE(notes[1].find(sacn), std::string::npos) << notes[1];
+  // Another loopback address on the same port shares nothing: no warning.
+  o.bindAddress = "127.0.0.2";
+  auto beside = UdpReceiver::open(o);
+  ASSERT_TRUE(beside.ok()) << beside.error().str();
+  EXPECT_TRUE((*beside)->notes().empty()) << (*beside)->notes().front();
 }
 
 TEST(UdpReceiver, AnAddressOfAnotherMachineIsAClearError) {
