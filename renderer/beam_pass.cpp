@@ -11,6 +11,7 @@
 #include "renderer/beam_footprint.h"
 #include "renderer/camera_uniforms.h"
 #include "renderer/gl/program.h"
+#include "renderer/shader_features.h"
 #include "shaders/interface.h"
 
 namespace haze {
@@ -31,8 +32,9 @@ Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings&
   std::vector<std::string> defines;
   if (p.settings_.fused) defines.push_back("FUSED");
   if (p.settings_.lattice > 0) defines.push_back("LATTICE");
-  auto planes = gl::buildProgram({.label = "virtual_planes", .vertex = "planes.vert.glsl", .fragment = "planes.frag.glsl",
-                                  .defines = defines});
+  const gl::ProgramDesc planesDesc{.label = "virtual_planes", .vertex = "planes.vert.glsl",
+                                   .fragment = "planes.frag.glsl", .defines = defines};
+  auto planes = gl::buildProgram(planesDesc);
   if (!planes) return planes.error();
   auto composite = gl::buildProgram({.label = "scatter_composite", .vertex = "fullscreen.vert.glsl",
                                      .fragment = "composite.frag.glsl"});
@@ -44,11 +46,14 @@ Result<BeamPass> BeamPass::create(int width, int height, const BeamPassSettings&
                                 .fragment = "refine_mask.frag.glsl"});
   if (!mask) return mask.error();
   defines.push_back("EARLY_STENCIL");
-  auto planesFine = gl::buildProgram({.label = "virtual_planes_refined", .vertex = "planes.vert.glsl",
-                                      .fragment = "planes.frag.glsl", .defines = defines});
+  const gl::ProgramDesc planesFineDesc{.label = "virtual_planes_refined", .vertex = "planes.vert.glsl",
+                                       .fragment = "planes.frag.glsl", .defines = defines};
+  auto planesFine = gl::buildProgram(planesFineDesc);
   if (!planesFine) return planesFine.error();
   p.planes_ = std::move(*planes);
   p.planesFine_ = std::move(*planesFine);
+  p.planesStatic_ = gl::ProgramVariants(planesDesc);
+  p.planesFineStatic_ = gl::ProgramVariants(planesFineDesc);
   p.composite_ = std::move(*composite);
   p.scatterDepth_ = std::move(*depth);
   p.refineMask_ = std::move(*mask);
@@ -137,7 +142,18 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
   glBlendEquation(GL_FUNC_ADD);
   // The refinement's program is the same shader with early stencil tests: without them
   // llvmpipe shades every fragment of the footprint before the stencil rejects it.
-  for (GLuint prog : {planes_.id(), refining() ? planesFine_.id() : 0u}) {
+  // The programs with this frame's switches compiled in, or (off, or one that does not build)
+  // the ones that read them from uniforms.
+  GLuint planesProg = planes_.id(), fineProg = planesFine_.id();
+  if (settings_.staticFeatures) {
+    const std::vector<std::string> features =
+        ShaderFeatures{.densityField = density.on(), .softShadows = beams.softShadows(), .phase = static_cast<int>(med.phase)}
+            .defines();
+    if (GLuint p = planesStatic_.get(features)) planesProg = p;
+    if (refining())
+      if (GLuint p = planesFineStatic_.get(features)) fineProg = p;
+  }
+  for (GLuint prog : {planesProg, refining() ? fineProg : 0u}) {
     if (prog == 0) continue;
     setCameraUniforms(prog, frame.camera, aspect);
     glProgramUniform1f(prog, HAZE_LOC_SCATTER_SIGMA_S, med.scattering);
@@ -174,7 +190,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
     const float jitter = std::fmod(static_cast<float>(accumulated_) * 0.6180339887f, 1.0f);
     glBindFramebuffer(GL_FRAMEBUFFER, scatterFbo_.id());
     glViewport(0, 0, lowW_, lowH_);
-    fragments += drawBeams(planes_.id(), jitter, frame, footprints, lowW_, lowH_);
+    fragments += drawBeams(planesProg, jitter, frame, footprints, lowW_, lowH_);
     if (sun) sun->drawScatter(frame, aspect, jitter, density);
     if (refining()) {
       // The mask follows the first frame of an accumulation and is kept for the rest, so that
@@ -185,7 +201,7 @@ uint64_t BeamPass::render(const FrameState& frame, const BeamResources& beams, c
       glEnable(GL_STENCIL_TEST);
       glStencilFunc(GL_EQUAL, 1, 0xFF);
       glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      drawBeams(planesFine_.id(), jitter, frame, footprints, width_, height_);
+      drawBeams(fineProg, jitter, frame, footprints, width_, height_);
       if (sun) sun->drawScatter(frame, aspect, jitter, density);
       glDisable(GL_STENCIL_TEST);
     }

@@ -16,6 +16,7 @@
 #include "renderer/beam_resources.h"
 #include "renderer/density_resources.h"
 #include "renderer/gl/objects.h"
+#include "renderer/gl/program.h"
 #include "renderer/scene/frame_state.h"
 #include "renderer/sun_pass.h"
 
@@ -43,6 +44,9 @@ struct BeamPassSettings {
   // lattice grid over the beam's footprint and interpolated by the rasteriser (no jitter, not
   // fused). For the accuracy study against the reference.
   int lattice = 0;
+  // The frame's density field, soft shadows and phase function compiled into the planes'
+  // program (renderer/shader_features.h); off, read from uniforms (same image, for tests).
+  bool staticFeatures = true;
 };
 
 class BeamPass {
@@ -78,6 +82,7 @@ class BeamPass {
   void markRefinedPixels();
 
   gl::Program planes_, planesFine_, composite_, scatterDepth_, refineMask_;
+  gl::ProgramVariants planesStatic_, planesFineStatic_;  // per ShaderFeatures
   gl::Texture scatter_, lowDepth_;
   gl::Framebuffer scatterFbo_, lowDepthFbo_;
   // Refinement: the full-resolution scattering of the marked pixels, the mask, and the stencil

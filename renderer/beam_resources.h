@@ -75,6 +75,7 @@ class BeamResources {
   // The soft-shadow switch (FrameState::softShadows of the last update) and the least-depth
   // pyramid's on a program that includes beams.glsl and tests visibility.
   void bindSoftShadows(unsigned int program) const;
+  bool softShadows() const { return softShadows_; }
   int count() const { return static_cast<int>(gpuBeams_.size()); }
   const std::vector<GpuBeam>& beams() const { return gpuBeams_; }
   const BeamResourceSettings& settings() const { return settings_; }

@@ -15,6 +15,7 @@
 #include "renderer/density_resources.h"
 #include "renderer/gl/scope.h"
 #include "renderer/gl/program.h"
+#include "renderer/shader_features.h"
 #include "renderer/gpu_bodies.h"
 #include "renderer/gpu_venue.h"
 #include "renderer/light_tiles.h"
@@ -60,6 +61,7 @@ struct Renderer::Impl {
   BeamResources beams;
   DensityResources density;
   gl::Program shadowProgram, gbufferProgram, surfaceProgram, lensProgram, postProgram, bloomPostProgram;
+  gl::ProgramVariants surfaceStatic;  // surfaceProgram with the frame's switches compiled in (ShaderFeatures)
   gl::Texture radiance, depth, display;
   // The surfaces' attributes per pixel (gbuffer.frag.glsl), lit once per pixel by surface.frag.glsl.
   gl::Texture gbuffer;
@@ -97,7 +99,7 @@ struct Renderer::Impl {
   void updateMaps(const FrameState& frame, PassTimes& times, std::vector<std::string>& warnings);
   void clearScene(const FrameState& frame, const View& v);
   void drawSurfaceAttributes(const FrameState& frame, const View& v, bool cullBodies, PassTimes& times);
-  void lightSurfaces(const FrameState& frame, const View& v, bool tiledSurfaces);
+  void lightSurfaces(const FrameState& frame, const View& v, bool tiledSurfaces, bool staticFeatures);
   void drawLenses(const FrameState& frame, const View& v);
   void drawParticles(const FrameState& frame, const View& v, PassTimes& times, std::vector<std::string>& warnings);
   void collectTimes(const FrameState& frame, const RenderSettings& settings, PassTimes& times);
@@ -149,8 +151,9 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
   auto gbuffer = gl::buildProgram({.label = "gbuffer", .vertex = "venue.vert.glsl", .fragment = "gbuffer.frag.glsl"});
   if (!gbuffer) return gbuffer.error();
   impl->gbufferProgram = std::move(*gbuffer);
-  auto surface =
-      gl::buildProgram({.label = "surface", .vertex = "fullscreen.vert.glsl", .fragment = "surface.frag.glsl"});
+  const gl::ProgramDesc surfaceDesc{.label = "surface", .vertex = "fullscreen.vert.glsl", .fragment = "surface.frag.glsl"};
+  auto surface = gl::buildProgram(surfaceDesc);
+  impl->surfaceStatic = gl::ProgramVariants(surfaceDesc);
   if (!surface) return surface.error();
   auto lens = gl::buildProgram({.label = "lens", .vertex = "lens.vert.glsl", .fragment = "lens.frag.glsl"});
   if (!lens) return lens.error();
@@ -169,7 +172,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create(const Venue& venue, const Ren
                                 .refineCurvature = settings.refineCurvature,
                                 .refineFloor = settings.refineFloor, .frames = settings.frames, .jitter = settings.jitter,
                                 .fused = settings.fusedPlanes, .minSamplesPerChord = settings.minSamplesPerChord,
-                                .lattice = settings.lattice});
+                                .lattice = settings.lattice, .staticFeatures = settings.staticFeatures});
   if (!pass) return pass.error();
   impl->beamPass = std::move(*pass);
   auto sun = SunPass::create({.mapSize = settings.sunMapSize, .steps = settings.sunSteps});
@@ -225,7 +228,7 @@ void Renderer::render(const FrameState& frame, bool accumulate) {
     m.density.update(frame, view.aspect, m.beams);
     m.clearScene(frame, view);
     m.drawSurfaceAttributes(frame, view, settings_.cullBodies, times_);
-    m.lightSurfaces(frame, view, settings_.tiledSurfaces);
+    m.lightSurfaces(frame, view, settings_.tiledSurfaces, settings_.staticFeatures);
     m.drawLenses(frame, view);
   }
   {
@@ -323,7 +326,7 @@ void Renderer::Impl::drawSurfaceAttributes(const FrameState& frame, const View& 
 
 // The lighting once per pixel over the G-buffer (a full-screen triangle), each pixel's beams
 // from its screen tile's list when the surfaces are tiled.
-void Renderer::Impl::lightSurfaces(const FrameState& frame, const View& v, bool tiledSurfaces) {
+void Renderer::Impl::lightSurfaces(const FrameState& frame, const View& v, bool tiledSurfaces, bool staticFeatures) {
   gl::PassScope pass("surface lighting");
   gl::Capability depthTest(GL_DEPTH_TEST, false), blend(GL_BLEND, false);
   beams.bind();
@@ -334,7 +337,11 @@ void Renderer::Impl::lightSurfaces(const FrameState& frame, const View& v, bool 
     tiles.bind();
   }
   glBindFramebuffer(GL_FRAMEBUFFER, radianceOnlyFbo.id());
-  const GLuint prog = surfaceProgram.id();
+  GLuint prog = surfaceProgram.id();
+  if (staticFeatures) {
+    const ShaderFeatures features{.densityField = density.on(), .sun = sun.lit(), .softShadows = beams.softShadows()};
+    if (GLuint p = surfaceStatic.get(features.defines())) prog = p;
+  }
   glUseProgram(prog);
   setCameraUniforms(prog, frame.camera, v.aspect);
   glProgramUniform1f(prog, HAZE_LOC_SURFACE_SIGMA_T, v.sigmaT);

@@ -39,6 +39,10 @@ struct RenderSettings {
   // lit (renderer/scene/depth_pyramid.h); off, every lookup takes its taps (same image, for
   // tests and the bench).
   bool shadowMinPyramid = true;
+  // The frame's density field, sun, soft shadows and phase function compiled into the planes'
+  // and the surfaces' programs (renderer/shader_features.h: llvmpipe runs both sides of a
+  // branch on a uniform); off, read from uniforms (same image, for tests).
+  bool staticFeatures = true;
   // Beams' shadow maps draw only the venue's chunks that their frustum reaches
   // (GpuVenue::drawInside); off, every chunk (same depths, for tests and the bench).
   bool cullVenueChunks = true;

@@ -1,11 +1,18 @@
 // The density field D(x) and the optical paths through it (docs/physics.md, section 9;
 // docs/rendering.md, "Density"). Paths are integrals of D in metres (an optical depth is
-// sigma_t times one); with uDensityOn == 0 the medium is uniform: D = 1 and a path is its
+// sigma_t times one); without DENSITY_ON the medium is uniform: D = 1 and a path is its
 // length, with no lookups. The two path maps are made on the CPU (renderer/density_resources.cpp):
 // from the eye over (screen, view depth), and from each beam's lens over (light-map u, v, r).
 #include "interface.h"
 
 layout(location = HAZE_LOC_DENSITY_ON) uniform int uDensityOn;
+// A program built with STATIC_FEATURES for a frame without a field (no DENSITY_FIELD) has the
+// field's code compiled out (shaders/interface.h, "Static features").
+#if defined(STATIC_FEATURES) && !defined(DENSITY_FIELD)
+#define DENSITY_ON false
+#else
+#define DENSITY_ON (uDensityOn != 0)
+#endif
 layout(location = HAZE_LOC_DENSITY_MIN) uniform vec3 uDensityMin;
 layout(location = HAZE_LOC_DENSITY_INV_SIZE) uniform vec3 uDensityInvSize;
 layout(location = HAZE_LOC_EYE_PATH_EYE) uniform vec3 uPathEye;
@@ -19,11 +26,11 @@ layout(binding = HAZE_UNIT_EYE_PATH) uniform sampler3D uEyePath;
 layout(binding = HAZE_UNIT_LENS_PATH) uniform sampler3D uLensPath;
 
 float densityAt(vec3 x) {
-  if (uDensityOn == 0) return 1.0;
+  if (!DENSITY_ON) return 1.0;
   return texture(uDensity, (x - uDensityMin) * uDensityInvSize).r;
 }
 
-// The integral of D from the eye to x (only with uDensityOn: its uniforms are set only then). The map's slice k is view depth k * uPathDepth / (n - 1);
+// The integral of D from the eye to x (only with DENSITY_ON: its uniforms are set only then). The map's slice k is view depth k * uPathDepth / (n - 1);
 // beyond its last slice the path goes on at the density found there.
 float eyePathTo(vec3 x) {
   vec3 d = x - uPathEye;
@@ -41,7 +48,7 @@ float eyePathTo(vec3 x) {
 
 // The integral of D from beam i's lens to the point at distance r in direction wl; uv is the
 // light-map coordinate of wl (in [0, 1]^2, as beamIntensity looks it up), invReach is
-// 1 / the beam's reach (its map's last slice). Only with uDensityOn.
+// 1 / the beam's reach (its map's last slice). Only with DENSITY_ON.
 float lensPathTo(int i, vec2 uv, float r, float invReach) {
   int tiles = uLensPathGrid.x, side = uLensPathGrid.z, slices = uLensPathGrid.w;
   vec2 tile = vec2(i % tiles, i / tiles);

@@ -151,6 +151,13 @@
 #define HAZE_LOC_PARTICLES_SIGMA_T 89     // float
 #define HAZE_LOC_PARTICLES_SPRITE 90      // vec4: kernel radius (px), 1 / a pixel's solid angle on the axis (1/sr), display gain, 0
 
+// ---- Static features -------------------------------------------------------------------
+// Programs built with STATIC_FEATURES (the virtual planes and the surface lighting,
+// renderer/shader_features.h) have the frame's switches compiled in: DENSITY_FIELD, SUN and
+// SOFT_SHADOWS when the frame has them, PHASE_KIND its HAZE_PHASE_*. Without one, that code is
+// left out, not skipped at run time: llvmpipe runs both sides of a branch, so a uniform's `if`
+// costs every sample. The others read the switches from their uniforms.
+
 // ---- Enums --------------------------------------------------------------------------------
 // haze::Phase (renderer/scene/frame_state.h) asserts its values against these.
 #define HAZE_PHASE_HAZY 0

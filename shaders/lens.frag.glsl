@@ -24,7 +24,7 @@ void main() {
     vec3 wl;
     float r;
     vec3 I = beamIntensity(b, uEye, wl, r);
-    float path = uDensityOn != 0 ? eyePathTo(vPosition) : length(vPosition - uEye);
+    float path = DENSITY_ON ? eyePathTo(vPosition) : length(vPosition - uEye);
     L = I * b.lens.y / cosE * exp(-uSigmaT * path);
   }
   outRadiance = vec4(L, 1.0);

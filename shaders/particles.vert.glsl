@@ -29,7 +29,7 @@ void main() {
     float d = max(length(toEye), 1e-4);
     vec3 we = toEye / d;
     float lensPath = r, eyePath = d;
-    if (uDensityOn != 0) {
+    if (DENSITY_ON) {
       float cz = dot(wl, b.zb.xyz);
       vec2 uv = vec2(dot(wl, b.xb.xyz), dot(wl, b.yb.xyz)) / cz * b.xb.w * 0.5 + 0.5;
       lensPath = lensPathTo(int(t.x), uv, r, b.lens.w);

@@ -24,6 +24,20 @@ layout(location = HAZE_FRAG_OUT) out vec4 outScatter;
 // Interleaved gradient noise (Jimenez 2014): a cheap per-pixel offset with blue-ish spectrum.
 float ign(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }
 
+// Whether no shadow lookup along the chord [seg.x, seg.y] can find a blocker: the chord's
+// shadow-map image is the segment between its ends' (a projective map keeps lines), its window
+// depth is monotone along it (c.z / c.w of a linear c), and a soft lookup's blocker search
+// reaches 2 k / w around its point, widest at the chord's nearer end. So one pyramid texel
+// over the box of both ends grown by that reach, against the farther end's depth, answers for
+// every sample at once, and where it says lit each sample's own lookup would give exactly 1.
+bool chordSurelyLit(Beam b, BeamRay ray, SoftShadowSetup ss, vec2 seg) {
+  vec4 ca = ray.c0 + seg.x * ray.c1, cb = ray.c0 + seg.y * ray.c1;
+  if (ca.w <= 0.0 || cb.w <= 0.0) return false;
+  vec3 sa = ca.xyz / ca.w * 0.5 + 0.5, sb = cb.xyz / cb.w * 0.5 + 0.5;
+  float reach = SOFT_SHADOWS_ON && b.lens.x > 0.0 ? 2.0 * ss.k / min(ca.w, cb.w) : 0.0;
+  return surelyLitBox(b, min(sa.xy, sb.xy) - reach, max(sa.xy, sb.xy) + reach, max(sa.z, sb.z));
+}
+
 void main() {
   vec2 uv = gl_FragCoord.xy / uTargetSize;
   float zScene = sceneViewDepth(uv);
@@ -66,6 +80,7 @@ void main() {
     if (seg.y > core.y) pieces[nPieces++] = vec2(core.y, seg.y);
   }
   bool hasCore = core.y > core.x;
+  SoftShadowSetup ss = softShadowSetup(b);  // once per pixel, not per sample
   vec3 L = vec3(0.0);
   for (int p = 0; p < nPieces; ++p) {
     vec2 piece = pieces[p];
@@ -90,19 +105,31 @@ void main() {
     // sees no shadow edge stops at n (llvmpipe runs a branch's both sides, a loop only as long
     // as one of its pixels needs). Soft shadows are a ramp that the strata integrate already
     // (docs/rendering.md, "Accuracy").
-    bool hard = uSoftShadows == 0 || b.lens.x <= 0.0;
+    bool hard = !SOFT_SHADOWS_ON || b.lens.x <= 0.0;
     vec2 vRange = vec2(1.0, 0.0);
-    int nAll = n;
+    // A chord that no shadow lookup can find a blocker for is walked without them (V = 1), in
+    // a loop of its own: the other loop's count is then 0, so a block of pixels whose chords
+    // are all lit never runs the lookups (the pyramid's texel alone cost as much as the rest
+    // of a sample).
+    bool lit = chordSurelyLit(b, ray, ss, piece);
+    for (int k = 0; k < (lit ? n : 0); ++k) {
+      Lp += scatterAt(b, ray, ss, false, (tc + D * T) / len, vRange) * (1.0 + T * T);
+      T = (T + tau) / (1.0 - T * tau);
+    }
+    int nAll = lit ? 0 : n;
+    // Where the second walk starts (its strata moved by half), worked out before the loop: in
+    // it, the branch's body would be run for every sample.
+    float tx2 = tan(fract(xi + 0.5) * dphi);
+    float T2 = (T0 + tx2) / (1.0 - T0 * tx2);
     for (int k = 0; k < nAll; ++k) {
-      Lp += scatterAt(b, ray, (tc + D * T) / len, vRange) * (1.0 + T * T);
+      Lp += scatterAt(b, ray, ss, true, (tc + D * T) / len, vRange) * (1.0 + T * T);
       T = (T + tau) / (1.0 - T * tau);
       if (k == n - 1 && hard && vRange.y - vRange.x > 0.5) {
         nAll = 2 * n;
-        float tx2 = tan(fract(xi + 0.5) * dphi);
-        T = (T0 + tx2) / (1.0 - T0 * tx2);
+        T = T2;
       }
     }
-    L += Lp * (D * dphi * float(n) / float(nAll));
+    L += Lp * (D * dphi * float(n) / float(max(nAll, n)));
   }
   if (L == vec3(0.0)) discard;
   outScatter = vec4(L, 0.0);

@@ -25,7 +25,7 @@ vec3 scatterSample(Beam b, vec3 v, float len, float z) {
   if (I == vec3(0.0)) return vec3(0.0);
   float vis = beamVisibilityVolume(b, x);
   float t = z * len;
-  if (uDensityOn == 0)
+  if (!DENSITY_ON)
     return uSigmaS * phaseFunction(dot(wl, -v / len)) * vis * I * exp(-uSigmaT * (r + t)) / (r * r);
   // sigma_s(x) = D(x) sigma_s, both transmittances over the paths through D (docs/physics.md, 9).
   float cz = dot(wl, b.zb.xyz);
@@ -61,8 +61,9 @@ BeamRay beamRay(Beam b, vec3 v, float len) {
 }
 
 // vRange: the least and largest V the walk has seen so far (the hard shadows' second pass,
-// planes.frag.glsl).
-vec3 scatterAt(Beam b, BeamRay s, float z, inout vec2 vRange) {
+// planes.frag.glsl). shadowed false: the caller knows V = 1 (a chord no lookup can find a
+// blocker for), and the lookups are left out.
+vec3 scatterAt(Beam b, BeamRay s, SoftShadowSetup ss, bool shadowed, float z, inout vec2 vRange) {
   vec3 d = s.d0 + z * s.d1;
   float r2 = max(dot(d, d), 1e-12);
   float r = sqrt(r2);
@@ -70,10 +71,10 @@ vec3 scatterAt(Beam b, BeamRay s, float z, inout vec2 vRange) {
   if (p.z <= b.lensPos.w * r) return vec3(0.0);  // outside the cone
   vec2 uv = p.xy / p.z * b.xb.w * 0.5 + 0.5;
   float cd = texture(uLightMaps, vec3(uv, b.yb.w)).r;
-  float vis = beamVisibilityClip(b, s.c0 + z * s.c1);
+  float vis = shadowed ? beamVisibilityClip(b, ss, s.c0 + z * s.c1) : 1.0;
   vRange = vec2(min(vRange.x, vis), max(vRange.y, vis));
   float cosA = (s.q0 + z * s.q1) / r;
-  if (uDensityOn == 0)
+  if (!DENSITY_ON)
     return uSigmaS * phaseFunction(cosA) * vis * cd * b.color.rgb * exp(-uSigmaT * (r + z * s.len)) / r2;
   // sigma_s(x) = D(x) sigma_s, both transmittances over the paths through D (docs/physics.md, 9).
   vec3 x = b.lensPos.xyz + d;

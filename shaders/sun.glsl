@@ -4,6 +4,11 @@
 #include "interface.h"
 
 layout(location = HAZE_LOC_SUN_ON) uniform int uSunOn;
+#if defined(STATIC_FEATURES) && !defined(SUN)
+#define SUN_ON false  // compiled out (shaders/interface.h, "Static features")
+#else
+#define SUN_ON (uSunOn != 0)
+#endif
 layout(location = HAZE_LOC_SUN_DIRECTION) uniform vec3 uSunDirection;
 layout(location = HAZE_LOC_SUN_ILLUMINANCE) uniform vec3 uSunIlluminance;
 layout(location = HAZE_LOC_SUN_VIEW_PROJ) uniform mat4 uSunViewProj;
@@ -26,7 +31,7 @@ float sunPathInBox(vec3 x) {
 // The sun's optical path to x in metres of nominal medium: its length in the box, or through a
 // density field the integral of D along it.
 float sunPathTo(vec3 x) {
-  if (uDensityOn == 0) return sunPathInBox(x);
+  if (!DENSITY_ON) return sunPathInBox(x);
   if (any(lessThan(x, uSunBoxMin)) || any(greaterThan(x, uSunBoxMax))) return 0.0;
   return texture(uSunPath, (x - uDensityMin) * uDensityInvSize).r;
 }

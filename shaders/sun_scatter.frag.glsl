@@ -39,7 +39,7 @@ void main() {
     vec3 x = uEye + v * t;
     float vis = sunVisibilityVolume(x);
     if (vis <= 0.0) continue;
-    if (uDensityOn == 0)
+    if (!DENSITY_ON)
       sum += vis * exp(-uMarch.y * (sunPathInBox(x) + t));
     else  // sigma_s(x) = D(x) sigma_s, both paths integrals of D (docs/physics.md, section 9)
       sum += vis * densityAt(x) * exp(-uMarch.y * (sunPathTo(x) + eyePathTo(x)));

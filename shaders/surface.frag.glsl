@@ -44,7 +44,7 @@ vec3 beamIrradiance(int i, vec3 vPosition, vec3 n) {
   float slant = sqrt(max(1.0 - cosine * cosine, 0.0));
   float v = beamVisibility(b, vPosition + n * (max(0.0015, 1.5 * texelPerM * slant) * r));
   float path = r;
-  if (uDensityOn != 0) {  // the light's path through D (docs/physics.md, section 9)
+  if (DENSITY_ON) {  // the light's path through D (docs/physics.md, section 9)
     vec2 uv = vec2(dot(wl, b.xb.xyz), dot(wl, b.yb.xyz)) / dot(wl, b.zb.xyz) * b.xb.w * 0.5 + 0.5;
     path = lensPathTo(i, uv, r, b.lens.w);
   }
@@ -81,7 +81,7 @@ void main() {
         irradiance += beamIrradiance(w * 32 + findLSB(bits), vPosition, n);
     }
   }
-  if (uSunOn != 0) irradiance += sunIrradiance(vPosition, n, uSigmaT);
+  if (SUN_ON) irradiance += sunIrradiance(vPosition, n, uSigmaT);
   vec3 L = albedo / PI * irradiance + albedo * uAmbient + emission;
-  outRadiance = vec4(L * exp(-uSigmaT * (uDensityOn != 0 ? eyePathTo(vPosition) : T)), 1.0);
+  outRadiance = vec4(L * exp(-uSigmaT * (DENSITY_ON ? eyePathTo(vPosition) : T)), 1.0);
 }

@@ -1,5 +1,6 @@
 #include "renderer/gl/program.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <mutex>
@@ -62,6 +63,22 @@ Result<GLuint> compile(GLenum stage, const std::string& file, const ProgramDesc&
 }  // namespace
 
 uint64_t programBuildCount() { return g_builds; }
+
+GLuint ProgramVariants::get(const std::vector<std::string>& defines) {
+  for (const auto& [key, program] : built_)
+    if (key == defines) return program.id();
+  if (std::find(failed_.begin(), failed_.end(), defines) != failed_.end()) return 0;
+  ProgramDesc desc = base_;
+  desc.defines.insert(desc.defines.end(), defines.begin(), defines.end());
+  auto program = buildProgram(desc);
+  if (!program) {
+    std::fprintf(stderr, "haze: %s (falling back to the program without this variant)\n", program.error().str().c_str());
+    failed_.push_back(defines);
+    return 0;
+  }
+  built_.emplace_back(defines, std::move(*program));
+  return built_.back().second.id();
+}
 
 Result<Program> buildProgram(const ProgramDesc& desc) {
   return buildProgram(desc, [](std::string_view name) { return embeddedShader(std::string(name).c_str()); });

@@ -27,6 +27,24 @@ Result<Program> buildProgram(const ProgramDesc& desc);
 // From other sources (tests): files are looked up by name through `lookup`.
 Result<Program> buildProgram(const ProgramDesc& desc, const ShaderLookup& lookup);
 
+// Variants of one program that differ only in #defines, each built on first use and kept. For
+// switches fixed for a whole frame that a uniform would make every pixel pay for: llvmpipe runs
+// both sides of a branch, so code behind an `if` on a uniform costs whether or not it runs.
+// get() gives 0 for a variant that does not build (its error printed once), so the caller can
+// fall back to a program that reads the switches from uniforms.
+class ProgramVariants {
+ public:
+  ProgramVariants() = default;
+  explicit ProgramVariants(ProgramDesc base) : base_(std::move(base)) {}
+  GLuint get(const std::vector<std::string>& defines);
+  size_t built() const { return built_.size(); }
+
+ private:
+  ProgramDesc base_;
+  std::vector<std::pair<std::vector<std::string>, Program>> built_;
+  std::vector<std::vector<std::string>> failed_;
+};
+
 // Programs built (or attempted) so far in this process: compiling is the costly part of
 // making a renderer, so tests check that what should reuse programs does.
 uint64_t programBuildCount();
