@@ -44,6 +44,16 @@ RenderSettings renderSettingsFor(Quality q, int width, int height) {
   return s;
 }
 
+const char* qualityName(Quality q) {
+  switch (q) {
+    case Quality::Draft: return "draft";
+    case Quality::Default: return "default";
+    case Quality::High: return "high";
+    case Quality::Reference: return "reference";
+  }
+  return "default";
+}
+
 Result<Quality> parseQuality(const std::string& name) {
   if (name == "draft") return Quality::Draft;
   if (name == "default") return Quality::Default;

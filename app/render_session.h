@@ -17,6 +17,8 @@
 namespace haze {
 
 RenderSettings renderSettingsFor(Quality q, int width, int height);
+// "draft", "default", "high" or "reference": the name parseQuality reads.
+const char* qualityName(Quality q);
 Result<Quality> parseQuality(const std::string& name);
 
 // writeExr, with a warning on stderr naming the file when half clamped pixels.

@@ -50,6 +50,7 @@ struct Options {
   std::optional<ExposureMode> exposureMode;
   std::optional<float> exposureEv;
   double turntableDeg = 0.0;  // the view turns this much about its target every frame
+  int turnFirst = 0, turnLast = -1;  // --turn-frames A-B: only frames A..B turn; -1: every frame
   double draftBudgetMs = -1.0;  // < 0: the GUI's own
 };
 
@@ -57,10 +58,12 @@ constexpr const char* kUsage =
     "haze open SHOW [--width W --height H] [--cue N] [--select ID]... [--tab cues|fixtures|library|patch|air|playback]\n"
     "               [--quality draft|default|high] [--help-window] [--sacn] [--artnet] [--bind ADDR]\n"
     "               [--exposure EV] [--exposure-mode auto|manual] [--draft-budget MS]\n"
-    "               [--turntable DEG] [--screenshot OUT.png] [--frames N]\n"
+    "               [--turntable DEG [--turn-frames A-B]] [--screenshot OUT.png] [--frames N]\n"
     "The designer's GUI on a show (the bundled demo when none is given); docs/gui.md.\n"
     "--draft-budget: while anything moves, frames are drawn smaller to take about MS (default 50,\n"
-    "0: always the full size). --turntable: the view turns DEG degrees a frame (a demo, a test).\n"
+    "0: always the full size). --turntable: the view turns DEG degrees a frame (a demo, a test);\n"
+    "--turn-frames A-B: during frames A to B only (counted from 0), so that the summary says how long\n"
+    "the first frame at the chosen quality took to show after the view stopped.\n"
     "--frames N draws N frames and exits; with --screenshot, of the whole window, written at the end.\n";
 
 int fail(const std::string& line) {
@@ -107,6 +110,20 @@ std::optional<int> parseOptions(const Args& args, Options& opt) {
       .choice("--quality", quality, {"draft", "default", "high"})
       .number("--exposure", exposure, -100, 100, "a number of EV")
       .number("--turntable", opt.turntableDeg, -180, 180, "degrees per frame")
+      .custom("--turn-frames", "frames A-B (0 <= A <= B)",
+              [&opt](const std::string& v) {
+                const size_t dash = v.find('-');
+                if (dash == std::string::npos) return false;
+                int a = 0, b = 0;
+                const auto ra = std::from_chars(v.data(), v.data() + dash, a);
+                const auto rb = std::from_chars(v.data() + dash + 1, v.data() + v.size(), b);
+                if (ra.ec != std::errc() || ra.ptr != v.data() + dash || rb.ec != std::errc() ||
+                    rb.ptr != v.data() + v.size() || a < 0 || b < a)
+                  return false;
+                opt.turnFirst = a;
+                opt.turnLast = b;
+                return true;
+              })
       .number("--draft-budget", opt.draftBudgetMs, 0, 10000, "milliseconds (0 or more)")
       .choice("--exposure-mode", exposureMode, {"auto", "manual"})
       .positional(opt.show, "show", false);
@@ -431,6 +448,15 @@ struct DraftPacing {
   std::chrono::steady_clock::time_point lastSwap = std::chrono::steady_clock::now();
   bool waited = true;
   std::vector<double> draftMs;  // every timed draft frame, for --turntable's summary
+  // --turn-frames: when the view stopped, and how long after it the first frame at the chosen
+  // quality was shown (its maps current: the picture a designer waits for); < 0 not yet.
+  std::optional<std::chrono::steady_clock::time_point> stoppedAt;
+  double stillMs = -1.0;
+
+  void stillShown(const Gui& gui) {
+    if (stoppedAt && stillMs < 0.0 && !gui.drewDraft && gui.stillFrames >= 1)
+      stillMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - *stoppedAt).count();
+  }
 
   void swapped(Gui& gui, ViewportRenderers& renderers) {
     const auto now = std::chrono::steady_clock::now();
@@ -458,6 +484,11 @@ struct DraftPacing {
     std::printf("turntable: %zu draft frames, median %.1f ms (%.1f per second), drawn at %dx%d of %dx%d, budget %g ms%s\n",
                 draftMs.size(), median, 1000.0 / median, renderers.draftWidth, renderers.draftHeight, renderers.width,
                 renderers.height, gui.draftBudgetMs, gui.draftLimited ? ", not met at the smallest size" : "");
+    if (stoppedAt && stillMs >= 0.0)
+      std::printf("still: the first %s frame shown %.0f ms after the view stopped, %d frames refined by the end\n",
+                  qualityName(gui.quality), stillMs, gui.stillFrames);
+    else if (stoppedAt)
+      std::printf("still: no frame at the chosen quality was shown after the view stopped\n");
   }
 };
 
@@ -501,7 +532,11 @@ int runGui(const Args& args) {
     } else {
       glfwPollEvents();
     }
-    if (opt.turntableDeg != 0.0) gui.orbit.yawRad += static_cast<float>(opt.turntableDeg * 3.14159265358979 / 180.0);
+    const bool turning = opt.turnLast < 0 || (frame >= opt.turnFirst && frame <= opt.turnLast);
+    if (opt.turntableDeg != 0.0 && turning)
+      gui.orbit.yawRad += static_cast<float>(opt.turntableDeg * 3.14159265358979 / 180.0);
+    else if (opt.turntableDeg != 0.0 && frame > opt.turnLast && !pacing.stoppedAt)
+      pacing.stoppedAt = std::chrono::steady_clock::now();
     if (glfwWindowShouldClose(gui.window) && (gui.quitConfirmed || !gui.doc->modified() || opt.frames > 0)) break;
     int fbW = 0, fbH = 0, winW = 0, winH = 0;
     glfwGetFramebufferSize(gui.window, &fbW, &fbH);
@@ -528,6 +563,7 @@ int runGui(const Args& args) {
       break;
     }
     settled = *drawn;
+    pacing.stillShown(gui);
     glViewport(0, 0, fbW, fbH);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
