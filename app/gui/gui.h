@@ -97,6 +97,10 @@ struct Gui {
   float meteredEv = 0.0f;  // the meter on the last render
   float shownEv = std::numeric_limits<float>::quiet_NaN();  // the absolute EV on screen; NaN: none yet
   std::chrono::steady_clock::time_point shownAt;
+  bool exposureLocked() const { return exposureMode == ExposureMode::Manual; }
+  // The viewport's mean display level (0..1, sRGB as drawn) of the last frame; measured only for
+  // the tests' probe (HAZE_GUI_PROBE_FILE), as reading the frame back costs a stall.
+  float viewMean = std::numeric_limits<float>::quiet_NaN();
   float bloom = 0.0f;  // lens glare on the display (DisplaySettings::bloom); never in the show
   double frameMs = 0.0;
   int stillFrames = 0;
@@ -194,6 +198,9 @@ std::vector<const FixtureDef*> drawFixtureFilter(Gui& gui);
 void drawLibraryTab(Gui& gui);
 void drawPatchTab(Gui& gui);
 void drawAtmosphereTab(Gui& gui);
+// Auto or manual exposure, keeping the picture (gui_atmosphere.cpp): manual is the lock of View >
+// Lock exposure, holding the EV on screen at the moment of the switch for every frame after it.
+void setExposureMode(Gui& gui, ExposureMode mode);
 void drawInspector(Gui& gui);
 void drawHelp(Gui& gui);
 void drawImportWarnings(Gui& gui);
