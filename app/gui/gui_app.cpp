@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/commands.h"
@@ -141,8 +142,7 @@ Status applyOptions(Gui& gui, const Options& opt) {
   gui.exposureEv = exposure.ev;
   gui.showHelp = opt.help;
   if (!opt.tab.empty()) {
-    const std::string names[] = {"Cues", "Fixtures", "Library", "Patch", "Air", "Playback"};
-    for (const std::string& n : names)
+    for (const std::string_view n : kShowTabs)
       if (std::equal(n.begin(), n.end(), opt.tab.begin(), opt.tab.end(),
                      [](char a, char b) { return std::tolower(a) == std::tolower(b); }))
         gui.openTab = n;
@@ -233,7 +233,8 @@ float meanLevel(int x, int y, int w, int h) {
 // current), the filter field's rectangle, and the selected fixtures' label boxes in the viewport
 // (window pixels) with their markers and whether each was pushed off its place (tests/gui/fixture_identity.sh);
 // the exposure (locked or not, the EV shown and metered) with the viewport's mean level and the
-// GUI's clock (tests/gui/exposure_lock.sh), and each fixture's intensity on stage.
+// GUI's clock (tests/gui/exposure_lock.sh), each fixture's intensity on stage, and the show
+// panel's width and its tabs' widths drawn and needed (tests/gui/panel_tabs.sh).
 void publishProbe(const Gui& gui) {
   if (!probing()) return;
   const char* path = std::getenv("HAZE_GUI_PROBE_FILE");
@@ -262,13 +263,22 @@ void publishProbe(const Gui& gui) {
     std::snprintf(one, sizeof one, "%s\"%d\":%.5f", stage.empty() ? "" : ",", id, a.intensity);
     stage += one;
   }
+  char panel[64];
+  std::snprintf(panel, sizeof panel, "\"show_panel_w\":%.1f", gui.layout.left.w);
+  std::string tabs;
+  for (const Gui::TabShown& t : gui.tabsShown) {
+    char one[120];
+    std::snprintf(one, sizeof one, "%s{\"name\":\"%s\",\"width\":%.1f,\"needed\":%.1f}", tabs.empty() ? "" : ",",
+                  t.name.c_str(), t.widthPx, t.neededPx);
+    tabs += one;
+  }
   char filter[160];
   const Rect& r = gui.filterField;
   std::snprintf(filter, sizeof filter, "{\"x\":%.1f,\"y\":%.1f,\"w\":%.1f,\"h\":%.1f}", r.x, r.y, r.w, r.h);
   const std::string text = "{\"numbers\":" + std::string(gui.showNumbers ? "true" : "false") +
                            ",\"fixture_rows\":" + ids(gui.fixtureRows) + ",\"patch_rows\":" + ids(gui.patchRows) +
                            ",\"filter_field\":" + filter + ",\"labels\":[" + labels + "]" + exposure +
-                           ",\"intensity\":{" + stage + "}}\n";
+                           ",\"intensity\":{" + stage + "},\"tabs\":[" + tabs + "]," + panel + "}\n";
   const std::string tmp = std::string(path) + ".tmp";
   if (std::FILE* f = std::fopen(tmp.c_str(), "w")) {
     std::fputs(text.c_str(), f);
@@ -282,7 +292,8 @@ void drawPanels(Gui& gui, int winW, int winH) {
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   if (!ImGui::IsAnyItemActive()) gui.mergeItem = 0;  // the next widget edit starts a new undo step
-  gui.layout = layoutFor(static_cast<float>(winW), static_cast<float>(winH), ImGui::GetFrameHeight());
+  gui.layout = layoutFor(static_cast<float>(winW), static_cast<float>(winH), ImGui::GetFrameHeight(),
+                         showPanelWidth(gui, static_cast<float>(winW)));
   gui.stage = gui.live ? gui.live->poll(0) : gui.doc->stageState(gui.nowS);
   followHeads(gui);
 
