@@ -63,7 +63,11 @@ struct Layout {
   Rect left, right, viewport;  // window coordinates, pixel (0, 0) at the top left
   Rect command;                // the command line, under the show panel
 };
-Layout layoutFor(float widthPx, float heightPx, float menuHeightPx);
+// leftWidthPx: the show panel's width (showPanelWidth); the inspector and viewport take the rest.
+Layout layoutFor(float widthPx, float heightPx, float menuHeightPx, float leftWidthPx);
+
+// The show panel's tabs, in their order on screen (gui_layout.cpp; --tab names them too).
+inline constexpr const char* kShowTabs[] = {"Cues", "Fixtures", "Library", "Patch", "Air", "Playback"};
 
 struct Gui {
   GLFWwindow* window = nullptr;
@@ -97,6 +101,10 @@ struct Gui {
   float meteredEv = 0.0f;  // the meter on the last render
   float shownEv = std::numeric_limits<float>::quiet_NaN();  // the absolute EV on screen; NaN: none yet
   std::chrono::steady_clock::time_point shownAt;
+  bool exposureLocked() const { return exposureMode == ExposureMode::Manual; }
+  // The viewport's mean display level (0..1, sRGB as drawn) of the last frame; measured only for
+  // the tests' probe (HAZE_GUI_PROBE_FILE), as reading the frame back costs a stall.
+  float viewMean = std::numeric_limits<float>::quiet_NaN();
   float bloom = 0.0f;  // lens glare on the display (DisplaySettings::bloom); never in the show
   double frameMs = 0.0;
   int stillFrames = 0;
@@ -131,6 +139,16 @@ struct Gui {
   std::vector<int> fixtureRows, patchRows;
   std::vector<PlacedLabel> placedLabels;
   Rect filterField;
+  // The show panel's tabs as the last frame laid them out: a tab drawn narrower than its label
+  // needs is truncated ("Fixtu...") (tests/gui/panel_tabs.sh).
+  struct TabShown {
+    std::string name;
+    float widthPx = 0, neededPx = 0;
+  };
+  std::vector<TabShown> tabsShown;
+  // The show panel's width as the user dragged its right edge to (0: showPanelWidth's default,
+  // wide enough for the tab names where the window allows).
+  float showPanelW = 0.0f;
 
   // Cues panel: the cue picked for editing (not the one on stage).
   std::optional<size_t> cueCursor;
@@ -186,6 +204,7 @@ struct Gui {
 void handleShortcuts(Gui& gui);
 void drawMenuBar(Gui& gui);
 void drawShowPanel(Gui& gui);  // the left panel's tabs
+float showPanelWidth(const Gui& gui, float windowWidthPx);  // the show panel's width this frame
 void drawCuesTab(Gui& gui);
 void drawPlaybacksTab(Gui& gui);  // every cue list: GO, BACK, master
 void drawFixturesTab(Gui& gui);
@@ -194,6 +213,9 @@ std::vector<const FixtureDef*> drawFixtureFilter(Gui& gui);
 void drawLibraryTab(Gui& gui);
 void drawPatchTab(Gui& gui);
 void drawAtmosphereTab(Gui& gui);
+// Auto or manual exposure, keeping the picture (gui_atmosphere.cpp): manual is the lock of View >
+// Lock exposure, holding the EV on screen at the moment of the switch for every frame after it.
+void setExposureMode(Gui& gui, ExposureMode mode);
 void drawInspector(Gui& gui);
 void drawHelp(Gui& gui);
 void drawImportWarnings(Gui& gui);

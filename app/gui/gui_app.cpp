@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/commands.h"
@@ -158,8 +159,7 @@ Status applyOptions(Gui& gui, const Options& opt) {
   gui.exposureEv = exposure.ev;
   gui.showHelp = opt.help;
   if (!opt.tab.empty()) {
-    const std::string names[] = {"Cues", "Fixtures", "Library", "Patch", "Air", "Playback"};
-    for (const std::string& n : names)
+    for (const std::string_view n : kShowTabs)
       if (std::equal(n.begin(), n.end(), opt.tab.begin(), opt.tab.end(),
                      [](char a, char b) { return std::tolower(a) == std::tolower(b); }))
         gui.openTab = n;
@@ -228,14 +228,33 @@ void publishFrameCount(int frame) {
   }
 }
 
+bool probing() {
+  static const char* path = std::getenv("HAZE_GUI_PROBE_FILE");
+  return path && *path;
+}
+
+// The mean of R, G and B (0..1, as displayed) over a framebuffer rectangle just drawn.
+float meanLevel(int x, int y, int w, int h) {
+  std::vector<unsigned char> rgba(static_cast<size_t>(w) * h * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(x, y, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  double sum = 0.0;
+  for (size_t i = 0; i < rgba.size(); i += 4) sum += rgba[i] + rgba[i + 1] + rgba[i + 2];
+  return static_cast<float>(sum / (3.0 * 255.0 * static_cast<double>(w) * h));
+}
+
 // With HAZE_GUI_PROBE_FILE set, what the last frame drew that a screenshot cannot tell a test
 // exactly, as one JSON object rewritten (atomically) after every frame, before the frame count:
 // whether View > Fixture numbers is on, the rows the Fixtures and Patch tabs listed (ids, in order; only the visible tab's are
 // current), the filter field's rectangle, and the selected fixtures' label boxes in the viewport
-// (window pixels) with their markers and whether each was pushed off its place (tests/gui/fixture_identity.sh).
+// (window pixels) with their markers and whether each was pushed off its place (tests/gui/fixture_identity.sh);
+// the exposure (locked or not, the EV shown and metered) with the viewport's mean level and the
+// GUI's clock (tests/gui/exposure_lock.sh), each fixture's intensity on stage, and the show
+// panel's width and its tabs' widths drawn and needed (tests/gui/panel_tabs.sh).
 void publishProbe(const Gui& gui) {
-  static const char* path = std::getenv("HAZE_GUI_PROBE_FILE");
-  if (!path || !*path) return;
+  if (!probing()) return;
+  const char* path = std::getenv("HAZE_GUI_PROBE_FILE");
   const auto ids = [](const std::vector<int>& v) {
     std::string out;
     for (int id : v) out += (out.empty() ? "" : ",") + std::to_string(id);
@@ -250,12 +269,33 @@ void publishProbe(const Gui& gui) {
                   l.moved ? "true" : "false");
     labels += one;
   }
+  char exposure[200];
+  std::snprintf(exposure, sizeof exposure, ",\"clock_s\":%.4f,\"exposure\":{\"locked\":%s,\"ev\":%.4f,\"metered_ev\":%.4f},\"view_mean\":%.6f",
+                gui.nowS, gui.exposureLocked() ? "true" : "false", std::isfinite(gui.shownEv) ? gui.shownEv : 0.0f,
+                gui.meteredEv, std::isfinite(gui.viewMean) ? gui.viewMean : -1.0f);
+  // Each fixture's intensity on stage this frame (tests/gui/command_words.sh times a fade by it).
+  std::string stage;
+  for (const auto& [id, a] : gui.stage) {
+    char one[48];
+    std::snprintf(one, sizeof one, "%s\"%d\":%.5f", stage.empty() ? "" : ",", id, a.intensity);
+    stage += one;
+  }
+  char panel[64];
+  std::snprintf(panel, sizeof panel, "\"show_panel_w\":%.1f", gui.layout.left.w);
+  std::string tabs;
+  for (const Gui::TabShown& t : gui.tabsShown) {
+    char one[120];
+    std::snprintf(one, sizeof one, "%s{\"name\":\"%s\",\"width\":%.1f,\"needed\":%.1f}", tabs.empty() ? "" : ",",
+                  t.name.c_str(), t.widthPx, t.neededPx);
+    tabs += one;
+  }
   char filter[160];
   const Rect& r = gui.filterField;
   std::snprintf(filter, sizeof filter, "{\"x\":%.1f,\"y\":%.1f,\"w\":%.1f,\"h\":%.1f}", r.x, r.y, r.w, r.h);
   const std::string text = "{\"numbers\":" + std::string(gui.showNumbers ? "true" : "false") +
                            ",\"fixture_rows\":" + ids(gui.fixtureRows) + ",\"patch_rows\":" + ids(gui.patchRows) +
-                           ",\"filter_field\":" + filter + ",\"labels\":[" + labels + "]}\n";
+                           ",\"filter_field\":" + filter + ",\"labels\":[" + labels + "]" + exposure +
+                           ",\"intensity\":{" + stage + "},\"tabs\":[" + tabs + "]," + panel + "}\n";
   const std::string tmp = std::string(path) + ".tmp";
   if (std::FILE* f = std::fopen(tmp.c_str(), "w")) {
     std::fputs(text.c_str(), f);
@@ -269,7 +309,8 @@ void drawPanels(Gui& gui, int winW, int winH) {
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   if (!ImGui::IsAnyItemActive()) gui.mergeItem = 0;  // the next widget edit starts a new undo step
-  gui.layout = layoutFor(static_cast<float>(winW), static_cast<float>(winH), ImGui::GetFrameHeight());
+  gui.layout = layoutFor(static_cast<float>(winW), static_cast<float>(winH), ImGui::GetFrameHeight(),
+                         showPanelWidth(gui, static_cast<float>(winW)));
   gui.stage = gui.live ? gui.live->poll(0) : gui.doc->stageState(gui.nowS);
   followHeads(gui);
 
@@ -430,14 +471,16 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   if (warning != gui.renderWarning && !warning.empty()) gui.say(warning, true);
   gui.renderWarning = warning;
   // The meter reads only new renders; the shown EV glides towards it (no flicker in a fade) and
-  // the window keeps drawing until it has arrived.
-  if (!settled && gui.exposureMode == ExposureMode::Auto) gui.meteredEv = r->meter().ev;
+  // the window keeps drawing until it has arrived. Locked, the meter still reads (the Air tab and
+  // the probe show what auto would do) but the EV on screen stays.
+  if (!settled) gui.meteredEv = r->meter().ev;
   const float target = exposureEvFor({.mode = gui.exposureMode, .ev = gui.exposureEv}, gui.meteredEv);
   const auto now = std::chrono::steady_clock::now();
   const float dt = std::chrono::duration<float>(now - gui.shownAt).count();
   gui.shownEv = gui.exposureMode == ExposureMode::Auto ? adaptEv(gui.shownEv, target, dt) : target;
   gui.shownAt = now;
   r->drawDisplay({.exposureEv = gui.shownEv, .bloom = gui.bloom}, 0, vx, vy, vw, vh);
+  if (probing()) gui.viewMean = meanLevel(vx, vy, vw, vh);
   if (!settled) gui.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return settled && std::abs(gui.shownEv - target) < 0.01f;
 }

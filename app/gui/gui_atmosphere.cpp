@@ -226,6 +226,15 @@ void drawParticles(Gui& gui) {
 
 }  // namespace
 
+void setExposureMode(Gui& gui, ExposureMode mode) {
+  if (mode == gui.exposureMode) return;
+  // Switching keeps the picture: the EV on screen becomes the manual (locked) EV, or the offset
+  // from the meter, so locking in the middle of a look holds exactly that look.
+  const float shown = std::isfinite(gui.shownEv) ? gui.shownEv : exposureEvFor({gui.exposureMode, gui.exposureEv}, gui.meteredEv);
+  gui.exposureEv = mode == ExposureMode::Manual ? shown : shown - gui.meteredEv;
+  gui.exposureMode = mode;
+}
+
 void drawAtmosphereTab(Gui& gui) {
   ShowDocument& doc = *gui.doc;
   AtmosphereDef a = doc.show().atmosphere;
@@ -280,21 +289,14 @@ void drawAtmosphereTab(Gui& gui) {
   int mode = gui.exposureMode == ExposureMode::Auto ? 0 : 1;
   const char* modes[] = {"Auto", "Manual"};
   ImGui::SetNextItemWidth(110);
-  if (ImGui::Combo("Exposure", &mode, modes, 2)) {
-    // Switching keeps the picture: the EV on screen becomes the manual EV, or the offset from the meter.
-    const bool toManual = mode == 1;
-    if (toManual != (gui.exposureMode == ExposureMode::Manual)) {
-      const float shown = std::isfinite(gui.shownEv) ? gui.shownEv : gui.exposureEv;
-      gui.exposureEv = toManual ? shown : shown - gui.meteredEv;
-      gui.exposureMode = toManual ? ExposureMode::Manual : ExposureMode::Auto;
-    }
-  }
+  if (ImGui::Combo("Exposure", &mode, modes, 2)) setExposureMode(gui, mode == 1 ? ExposureMode::Manual : ExposureMode::Auto);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Auto meters the image like a camera (docs/rendering.md); manual: EV 0 maps 50 cd/m^2 to 1");
   ImGui::SetNextItemWidth(110);
   const bool isAuto = gui.exposureMode == ExposureMode::Auto;
   ImGui::SliderFloat(isAuto ? "Offset EV" : "Exposure EV", &gui.exposureEv, isAuto ? -6.0f : -16.0f, 6.0f, "%.1f");
   if (isAuto) ImGui::Text("Metered %.1f EV, shown %.1f EV", gui.meteredEv, std::isfinite(gui.shownEv) ? gui.shownEv : 0.0f);
+  else ImGui::TextUnformatted("Locked: fades and cues keep this EV (View > Lock exposure, E)");
   ImGui::SetNextItemWidth(110);
   ImGui::SliderFloat("Bloom", &gui.bloom, 0.0f, 0.3f, "%.2f");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Lens glare around bright beams: display only, not in PFMs");

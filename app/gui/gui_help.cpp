@@ -17,6 +17,7 @@ constexpr const char* kShortcuts[][2] = {
     {"P", "Place a fixture of the library's profile: click a surface"},
     {"F", "Focus to point: click where the selection should aim"},
     {"L", "Command line (1 thru 4 @ 50): Enter runs, Tab completes, Up/Down recall"},
+    {"E", "Lock the exposure at the EV on screen (fades keep it), or back to auto"},
     {"Esc", "Back to selecting (or clear the selection)"},
     {"Ctrl+A", "Select every fixture"},
     {"Delete", "Delete the selected fixtures"},

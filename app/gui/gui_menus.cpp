@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "app/gui/gui.h"
@@ -56,6 +57,16 @@ void startFocus(Gui& gui) {
   gui.say("click the point the selected fixture(s) should aim at");
 }
 
+// A fade judged under auto exposure is brightened by the meter as it falls; locked, every frame
+// is shown at the EV on screen when the lock was taken (docs/rendering.md, "Exposure").
+void toggleExposureLock(Gui& gui) {
+  setExposureMode(gui, gui.exposureLocked() ? ExposureMode::Auto : ExposureMode::Manual);
+  char line[96];
+  if (gui.exposureLocked()) std::snprintf(line, sizeof line, "exposure locked at EV %.1f", gui.exposureEv);
+  else std::snprintf(line, sizeof line, "exposure follows the meter again");
+  gui.say(line);
+}
+
 }  // namespace
 
 void handleShortcuts(Gui& gui) {
@@ -100,6 +111,7 @@ void handleShortcuts(Gui& gui) {
       case GLFW_KEY_F: startFocus(gui); break;
       case GLFW_KEY_DELETE: deleteSelection(gui); break;
       case GLFW_KEY_L: gui.focusCommand = true; break;
+      case GLFW_KEY_E: toggleExposureLock(gui); break;
       case GLFW_KEY_F1: gui.showHelp = !gui.showHelp; break;
       case GLFW_KEY_ESCAPE:
         if (gui.tool != Tool::Select) gui.tool = Tool::Select;
@@ -168,6 +180,8 @@ void drawMenuBar(Gui& gui) {
     ImGui::MenuItem("Real movement speeds", nullptr, &gui.realMovement);
     ImGui::MenuItem("Fixture bodies", nullptr, &gui.showBodies);
     ImGui::MenuItem("Fixture numbers", nullptr, &gui.showNumbers);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Lock exposure", "E", gui.exposureLocked())) toggleExposureLock(gui);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
@@ -187,6 +201,12 @@ void drawMenuBar(Gui& gui) {
                   gui.draftLimited ? ", over budget" : "");
   else std::snprintf(timing, sizeof(timing), "%4.0f ms  draft", gui.frameMs);
   ImGui::TextUnformatted(timing);
+  // The EV on screen, always in sight: a designer judging a fade must know whether the meter moves it.
+  ImGui::Separator();
+  char ev[48];
+  std::snprintf(ev, sizeof ev, "EV %.1f %s", std::isfinite(gui.shownEv) ? gui.shownEv : 0.0f,
+                gui.exposureLocked() ? "locked" : "auto");
+  ImGui::TextUnformatted(ev);
   if (!gui.status.empty()) {
     ImGui::Separator();
     ImGui::PushStyleColor(ImGuiCol_Text, gui.statusError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.7f, 0.9f, 0.7f, 1.0f));

@@ -10,7 +10,7 @@ set -euo pipefail
 haze=$1; root=$2
 . "$root/tests/gui/xvfb.bash"
 . "$root/tests/cli/test_data.bash"
-start_xvfb 1920x1200
+XVFB_SCREEN=1920x1200x24 start_xvfb
 out=$(mktemp -d)
 trap 'kill $XVFB_PID 2>/dev/null; rm -rf "$out"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }

@@ -10,12 +10,12 @@
 # repeated by the server; on a loaded machine a repeat of "a" could fall between xdotool's
 # release of Ctrl and of "a", and typed a stray "a" into the path (20 copies side by side: a
 # Save as to "a/tmp/...", 10 of 20 walkthroughs failed).
-# start_xvfb [WxH]: the screen 1280x800 unless given (a window larger than the screen is cut).
+# XVFB_SCREEN: the screen's WxHxDEPTH for a test whose window is larger than 1280x800.
 start_xvfb() {
   command -v Xvfb >/dev/null || { echo "FAIL: Xvfb is not installed (make deps installs xvfb)"; exit 1; }
   local dfile n=""
   dfile=$(mktemp)
-  Xvfb -displayfd 3 -screen 0 "${1:-1280x800}x24" -nolisten tcp -noreset -r 3>"$dfile" >/dev/null 2>&1 &
+  Xvfb -displayfd 3 -screen 0 "${XVFB_SCREEN:-1280x800x24}" -nolisten tcp -noreset -r 3>"$dfile" >/dev/null 2>&1 &
   XVFB_PID=$!
   trap 'kill $XVFB_PID 2>/dev/null' EXIT
   for _ in $(seq 200); do
