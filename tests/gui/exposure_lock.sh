@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The exposure lock under Xvfb with real X keys (docs/gui.md, "Air"; docs/rendering.md,
-# "Exposure"): on the demo with one more cue, 4.2, every fixture at 0 in a 2 s fade, GO from cue 4
+# "Exposure"): on the demo with one more cue, 4.2, every fixture at 0 in a 6 s fade
+# (long enough that a loaded machine drawing a frame a second still samples it several times), GO from cue 4
 # (the finale, everything up) fades to black. Unlocked, auto exposure follows the meter, so the EV on screen
 # changes during the fade (it brightens what is falling). Locked (E, View > Lock exposure), the
 # EV held is the one on screen when E was pressed, for every frame of the fade, and the
@@ -21,7 +22,7 @@ for k, v in show["profiles"].items():
         show["profiles"][k] = os.path.join(base, v)
 cues = show["cue_lists"][0]["cues"]
 at = next(i for i, c in enumerate(cues) if c["number"] == "4")
-cues.insert(at + 1, {"number": "4.2", "label": "Black", "fade": 2.0,
+cues.insert(at + 1, {"number": "4.2", "label": "Black", "fade": 6.0,
                      "values": {str(f["id"]): {"intensity": 0.0} for f in show["fixtures"]}})
 json.dump(show, open(out, "w"), indent=2)
 PY
@@ -57,9 +58,9 @@ start_haze "haze - fade" "$tmp/fade.haze.json" --width 640 --height 360 --qualit
 check "the view settles at cue 4" steady
 check "auto at start (locked: $(probe "p['exposure']['locked']"))" '[ "$(probe "p[\"exposure\"][\"locked\"]")" = False ]'
 
-# Unlocked: GO, the 2 s fade to black, and 1 s after it.
+# Unlocked: GO, the 6 s fade to black, and 1 s after it.
 xdotool key space   # no settle: the frames of the fade are what is recorded
-record 3 "$tmp/auto.txt"
+record 7 "$tmp/auto.txt"
 python3 - "$tmp/auto.txt" <<'PY' && pass=$((pass + 1)) || fail=$((fail + 1))
 import sys
 rows = [tuple(map(float, l.split())) for l in open(sys.argv[1]) if l.strip()]
@@ -78,7 +79,7 @@ tap e
 check "E locks the exposure (locked: $(probe "p['exposure']['locked']"))" '[ "$(probe "p[\"exposure\"][\"locked\"]")" = True ]'
 held=$(probe "p['exposure']['ev']")
 xdotool key space
-record 3 "$tmp/locked.txt"
+record 7 "$tmp/locked.txt"
 python3 - "$tmp/locked.txt" "$held" <<'PY' && pass=$((pass + 1)) || fail=$((fail + 1))
 import sys
 rows = [tuple(map(float, l.split())) for l in open(sys.argv[1]) if l.strip()]
