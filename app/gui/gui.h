@@ -4,6 +4,7 @@
 //   gui_layout.cpp      where the panels and the viewport go for a window size
 //   gui_menus.cpp       menu bar (File, Edit, View, Help, tools) and keyboard shortcuts
 //   gui_files.cpp       open, new, save, save as, recent files, import MVR, the unsaved guard
+//   gui_settings.cpp    the view settings remembered between runs (gui-settings.json)
 //   gui_viewport.cpp    orbit/pan/zoom, cameras, clicks (select, place, focus), drags, overlay
 //   gui_cues.cpp        cue list, transport (GO, BACK, GOTO, fade progress), cue editing
 //   gui_fixtures.cpp    the fixture list (selection)
@@ -19,6 +20,7 @@
 #pragma once
 
 #include <chrono>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -30,6 +32,7 @@
 
 #include "shows/frame/atmosphere_field.h"
 #include "app/gui/desktop_dialog.h"
+#include "shows/edit/gui_settings.h"
 #include "shows/edit/label_layout.h"
 #include "shows/edit/show_document.h"
 #include "shows/movement.h"
@@ -150,6 +153,13 @@ struct Gui {
   // wide enough for the tab names where the window allows).
   float showPanelW = 0.0f;
 
+  // The view settings remembered between runs (gui_settings.cpp): the file, what it holds (as
+  // last read or written), the view's settings as of the last write or the start, and a lock
+  // remembered from the last run that waits for the first metered frame.
+  std::filesystem::path settingsFile;
+  GuiSettings settingsSaved, settingsBefore;
+  bool lockExposureWhenMetered = false;
+
   // Cues panel: the cue picked for editing (not the one on stage).
   std::optional<size_t> cueCursor;
 
@@ -222,6 +232,12 @@ void drawImportWarnings(Gui& gui);
 void drawCommandLine(Gui& gui);
 void drawFileDialogs(Gui& gui);
 void handleViewport(Gui& gui);  // mouse in the viewport, then the overlay
+
+// The view settings remembered between runs (gui_settings.cpp): read at start, after the command
+// line's options (which win for this run); kept once a frame, written only when one changed.
+GuiSettings viewSettingsOf(const Gui& gui);
+void loadViewSettings(Gui& gui, bool qualityFromCommandLine, bool exposureFromCommandLine);
+void keepViewSettings(Gui& gui);
 
 // File actions that the menus, shortcuts and the guard share (gui_files.cpp).
 void requestFileAction(Gui& gui, FileAction action, std::string path = "");

@@ -166,6 +166,7 @@ Status applyOptions(Gui& gui, const Options& opt) {
     if (gui.openTab.empty()) return Error{"", "--tab", "expected cues, fixtures, library, patch, air or playback, not '" + opt.tab + "'"};
   }
   gui.recent = loadRecentFiles(recentFilesPath());
+  loadViewSettings(gui, opt.quality.has_value(), opt.exposureMode.has_value());
   if (opt.artNet || opt.sacn) {
     LiveOptions lo;
     lo.udp.bindAddress = opt.bind;
@@ -251,7 +252,8 @@ float meanLevel(int x, int y, int w, int h) {
 // (window pixels) with their markers and whether each was pushed off its place (tests/gui/fixture_identity.sh);
 // the exposure (locked or not, the EV shown and metered) with the viewport's mean level and the
 // GUI's clock (tests/gui/exposure_lock.sh), each fixture's intensity on stage, and the show
-// panel's width and its tabs' widths drawn and needed (tests/gui/panel_tabs.sh).
+// panel's width and its tabs' widths drawn and needed (tests/gui/panel_tabs.sh), and the status
+// line (tests/gui/view_settings.sh).
 void publishProbe(const Gui& gui) {
   if (!probing()) return;
   const char* path = std::getenv("HAZE_GUI_PROBE_FILE");
@@ -292,10 +294,17 @@ void publishProbe(const Gui& gui) {
   char filter[160];
   const Rect& r = gui.filterField;
   std::snprintf(filter, sizeof filter, "{\"x\":%.1f,\"y\":%.1f,\"w\":%.1f,\"h\":%.1f}", r.x, r.y, r.w, r.h);
+  // The status line, as a JSON string (tests/gui/view_settings.sh reads a warning on it).
+  std::string status;
+  for (const char c : gui.status) {
+    if (c == '"' || c == '\\') status += '\\';
+    if (static_cast<unsigned char>(c) >= 0x20) status += c;
+  }
   const std::string text = "{\"numbers\":" + std::string(gui.showNumbers ? "true" : "false") +
                            ",\"fixture_rows\":" + ids(gui.fixtureRows) + ",\"patch_rows\":" + ids(gui.patchRows) +
                            ",\"filter_field\":" + filter + ",\"labels\":[" + labels + "]" + exposure +
-                           ",\"intensity\":{" + stage + "},\"tabs\":[" + tabs + "]," + panel + "}\n";
+                           ",\"intensity\":{" + stage + "},\"tabs\":[" + tabs + "]," + panel +
+                           ",\"status\":\"" + status + "\",\"status_error\":" + (gui.statusError ? "true" : "false") + "}\n";
   const std::string tmp = std::string(path) + ".tmp";
   if (std::FILE* f = std::fopen(tmp.c_str(), "w")) {
     std::fputs(text.c_str(), f);
@@ -323,6 +332,7 @@ void drawPanels(Gui& gui, int winW, int winH) {
   drawImportWarnings(gui);
   drawFileDialogs(gui);
   handleViewport(gui);
+  keepViewSettings(gui);
   ImGui::Render();
 }
 
@@ -474,6 +484,13 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   // the window keeps drawing until it has arrived. Locked, the meter still reads (the Air tab and
   // the probe show what auto would do) but the EV on screen stays.
   if (!settled) gui.meteredEv = r->meter().ev;
+  // A lock remembered from the last run locks at this run's first meter of a picture with its
+  // maps current, as if E were pressed then (shows/edit/gui_settings.h says why not last run's EV).
+  if (gui.lockExposureWhenMetered && gui.mapsPending == 0) {
+    gui.exposureEv = exposureEvFor({.mode = ExposureMode::Auto, .ev = gui.exposureEv}, gui.meteredEv);
+    gui.exposureMode = ExposureMode::Manual;
+    gui.lockExposureWhenMetered = false;
+  }
   const float target = exposureEvFor({.mode = gui.exposureMode, .ev = gui.exposureEv}, gui.meteredEv);
   const auto now = std::chrono::steady_clock::now();
   const float dt = std::chrono::duration<float>(now - gui.shownAt).count();

@@ -227,6 +227,7 @@ void drawParticles(Gui& gui) {
 }  // namespace
 
 void setExposureMode(Gui& gui, ExposureMode mode) {
+  gui.lockExposureWhenMetered = false;  // the designer's choice overrides a lock remembered from the last run
   if (mode == gui.exposureMode) return;
   // Switching keeps the picture: the EV on screen becomes the manual (locked) EV, or the offset
   // from the meter, so locking in the middle of a look holds exactly that look.

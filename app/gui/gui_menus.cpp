@@ -60,7 +60,9 @@ void startFocus(Gui& gui) {
 // A fade judged under auto exposure is brightened by the meter as it falls; locked, every frame
 // is shown at the EV on screen when the lock was taken (docs/rendering.md, "Exposure").
 void toggleExposureLock(Gui& gui) {
-  setExposureMode(gui, gui.exposureLocked() ? ExposureMode::Auto : ExposureMode::Manual);
+  // A lock remembered from the last run but not yet taken (no metered frame yet) counts as on.
+  const bool locked = gui.exposureLocked() || gui.lockExposureWhenMetered;
+  setExposureMode(gui, locked ? ExposureMode::Auto : ExposureMode::Manual);
   char line[96];
   if (gui.exposureLocked()) std::snprintf(line, sizeof line, "exposure locked at EV %.1f", gui.exposureEv);
   else std::snprintf(line, sizeof line, "exposure follows the meter again");
@@ -181,7 +183,7 @@ void drawMenuBar(Gui& gui) {
     ImGui::MenuItem("Fixture bodies", nullptr, &gui.showBodies);
     ImGui::MenuItem("Fixture numbers", nullptr, &gui.showNumbers);
     ImGui::Separator();
-    if (ImGui::MenuItem("Lock exposure", "E", gui.exposureLocked())) toggleExposureLock(gui);
+    if (ImGui::MenuItem("Lock exposure", "E", gui.exposureLocked() || gui.lockExposureWhenMetered)) toggleExposureLock(gui);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
