@@ -10,6 +10,7 @@ haze=$1; root=$2
 . "$root/tests/gui/xvfb.bash"
 start_xvfb
 out=$(mktemp -d)
+export XDG_CONFIG_HOME="$out/config"  # the GUI's remembered settings: its own, not the user's
 trap 'kill $XVFB_PID 2>/dev/null; rm -rf "$out"' EXIT
 demo=$root/examples/demo/demo.haze.json
 args=(--width 640 --height 360 --cue 2 --quality draft --exposure-mode manual --exposure 0)

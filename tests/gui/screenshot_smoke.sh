@@ -9,6 +9,7 @@ haze=$1; root=$2
 . "$root/tests/gui/xvfb.bash"
 start_xvfb
 out=$(mktemp -d)
+export XDG_CONFIG_HOME="$out/config"  # the GUI's remembered settings: its own, not the user's
 trap 'kill $XVFB_PID 2>/dev/null; rm -rf "$out"' EXIT
 demo=$root/examples/demo/demo.haze.json
 # The copy without haze lives in the temp folder; its venue and profiles point back to the demo's.

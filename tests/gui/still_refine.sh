@@ -12,6 +12,7 @@ haze=$1; root=$2
 . "$root/tests/cli/test_data.bash"
 XVFB_SCREEN=1920x1200x24 start_xvfb
 out=$(mktemp -d)
+export XDG_CONFIG_HOME="$out/config"  # the GUI's remembered settings: its own, not the user's
 trap 'kill $XVFB_PID 2>/dev/null; rm -rf "$out"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 passed=0
