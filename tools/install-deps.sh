@@ -8,6 +8,7 @@ packages=(
   libglfw3-dev libimgui-dev libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libassimp-dev liblo-dev liblo-tools ola iproute2 libasound2-dev alsa-utils
   libopenexr-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libcairo2-dev
+  librsvg2-dev  # SVG gobos (fixtures/gobo_image.cpp)
   xvfb xdotool x11-utils imagemagick ffmpeg poppler-utils libxml2-utils
   qlcplus-data
   chromium  # tests/cli/sheet_html.sh loads the HTML review sheet in it (headless, file:// only)

@@ -36,6 +36,7 @@ bool acceptOsc(const uint8_t* data, size_t size);
 bool acceptMidiTimecode(const uint8_t* data, size_t size);
 bool acceptMesh(const uint8_t* data, size_t size);  // .3ds / .glb / .gltf by the first bytes
 bool acceptQxf(const uint8_t* data, size_t size);   // a QLC+ fixture definition
+bool acceptSvgGobo(const uint8_t* data, size_t size);  // an SVG gobo image, rasterised
 
 }  // namespace haze::fuzz
 

@@ -320,3 +320,27 @@ put('mesh', 'bad-truncated.3ds', tds(cube_v, cube_f)[:40])
 huge_chunk = bytearray(glb(doc, buf))
 huge_chunk[12:16] = struct.pack('<I', 0xae000310)
 put('mesh', 'bad-glb-chunk-length.glb', bytes(huge_chunk))
+
+# ---- SVG gobo (fixtures/gobo_image.cpp through librsvg) ----
+# QLC+'s form (a black disc with holes, a declared size and no viewBox), a viewBox-only one with
+# a gradient and a group transform, an inline (data:) image; broken: cut short, not XML, a zero
+# size, a sliver; an <image> referring to a file, which is not read (accepted: it draws nothing).
+svg_head = '<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink"'
+svg_disc = (svg_head + ' width="80" height="80"><path fill-rule="evenodd" d="M40 0A40 40 0 0 0 0 40a40 40 0 0 0 '
+            '40 40 40 40 0 0 0 40-40A40 40 0 0 0 40 0zm-7 7.363h14v65.274H33V7.363z"/></svg>\n')
+put('svg_gobo', 'ok-qlc-disc.svg', svg_disc)
+put('svg_gobo', 'ok-viewbox.svg', svg_head + ' viewBox="0 0 21.167 21.167"><defs><radialGradient id="g">'
+    '<stop offset="0" stop-color="#fff"/><stop offset="1" stop-color="#000"/></radialGradient></defs>'
+    '<g transform="rotate(30 10.5 10.5)"><circle cx="10.5" cy="10.5" r="10" fill="url(#g)"/>'
+    '<rect x="4" y="9" width="13" height="3" fill="#000" opacity="0.5"/></g></svg>\n')
+one_px_png = base64.b64encode(bytes.fromhex(
+    '89504e470d0a1a0a0000000d49484452000000010000000108060000001f15c489'
+    '0000000d49444154789c63f8ffffff7f0009fb03fd2a86e38a0000000049454e44ae426082')).decode()
+put('svg_gobo', 'ok-inline-image.svg', svg_head + ' viewBox="0 0 10 10"><image width="10" height="10" '
+    'xlink:href="data:image/png;base64,' + one_px_png + '"/></svg>\n')
+put('svg_gobo', 'maybe-external-image.svg', svg_head + ' viewBox="0 0 10 10"><image width="10" height="10" '
+    'xlink:href="/etc/hostname"/><use xlink:href="other.svg#x"/></svg>\n')
+put('svg_gobo', 'bad-truncated.svg', svg_disc[:len(svg_disc) // 2])
+put('svg_gobo', 'bad-not-xml.svg', 'GIF89a not an svg\n')
+put('svg_gobo', 'bad-zero-size.svg', svg_head + ' width="0" height="80"/>\n')
+put('svg_gobo', 'bad-sliver.svg', svg_head + ' width="100000" height="1"/>\n')

@@ -141,6 +141,8 @@ TEST(FuzzReplay, Osc) { replay("osc", fuzz::acceptOsc, 5000, 13); }
 TEST(FuzzReplay, MidiTimecode) { replay("midi_timecode", fuzz::acceptMidiTimecode, 5000, 14); }
 TEST(FuzzReplay, Mesh) { replay("mesh", fuzz::acceptMesh, 500, 15); }
 TEST(FuzzReplay, Qxf) { replay("qxf", fuzz::acceptQxf, 3000, 16); }
+// Fewer: each accepted input is a 512-pixel raster (a few ms).
+TEST(FuzzReplay, SvgGobo) { replay("svg_gobo", fuzz::acceptSvgGobo, 600, 17); }
 
 }  // namespace
 }  // namespace haze
