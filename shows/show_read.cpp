@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fixtures/color.h"
+#include "fixtures/core/text_file.h"
 #include "shows/cue_number.h"
 #include "shows/effects.h"
 #include "shows/palettes.h"
@@ -1041,23 +1042,11 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
     };
     root = json::parse(text.begin(), text.end(), limitDepth);
   } catch (const json::parse_error& e) {
-    // e.byte counts from 1 at the character after the problem; turn it into a line and column.
-    size_t at = e.byte > 0 ? std::min<size_t>(e.byte - 1, text.size()) : 0;
-    size_t line = 1, col = 1;
-    for (size_t i = 0; i < at; ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        col = 1;
-      } else {
-        ++col;
-      }
-    }
     std::string what = e.what();
     // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error ..."
     auto colon = what.find(": ");
     if (colon != std::string::npos) what = what.substr(colon + 2);
-    r.problem("line " + std::to_string(line) + ", column " + std::to_string(col),
-              "the show is not valid JSON: " + what);
+    r.problem(parseErrorPlace(text, e.byte), "the show is not valid JSON: " + what);
     return out;
   } catch (const TooDeep&) {
     r.problem("", "the show nests JSON deeper than " + std::to_string(kMaxShowJsonDepth) +

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fixtures/core/atomic_file.h"
+#include "fixtures/core/text_file.h"
 #include "shows/edit/recent_files.h"
 
 namespace haze {
@@ -21,21 +22,6 @@ constexpr const char* kQualities[] = {"draft", "default", "high"};
 // Wider than any screen: a larger value is a broken file, not a width (one from a smaller
 // screen than this one is clamped by the GUI instead, which knows the window).
 constexpr float kMaxPanelWidthPx = 20000.0f;
-
-// "line L, column C" of a parse error (nlohmann's byte counts from 1 after the problem).
-std::string placeOf(std::string_view text, size_t byte) {
-  const size_t at = byte > 0 ? std::min(byte - 1, text.size()) : 0;
-  size_t line = 1, col = 1;
-  for (size_t i = 0; i < at; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(col);
-}
 
 }  // namespace
 
@@ -56,7 +42,7 @@ GuiSettingsLoad parseGuiSettings(std::string_view text, const std::string& fileN
     std::string what = e.what();
     // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: ..."
     if (const auto colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
-    problem(placeOf(text, e.byte), "not valid JSON (" + what + "); the view's defaults are used");
+    problem(parseErrorPlace(text, e.byte), "not valid JSON (" + what + "); the view's defaults are used");
     return out;
   }
   if (!root.is_object()) {

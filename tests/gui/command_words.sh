@@ -13,17 +13,7 @@ set -uo pipefail
 haze=$1; root=$2
 . "$root/tests/gui/gui_session.bash"
 
-python3 - "$root/examples/demo/demo.haze.json" "$tmp/words.haze.json" <<'PY' || { echo "FAIL: could not write the show"; exit 1; }
-import json, os, sys
-src, out = sys.argv[1], sys.argv[2]
-show = json.load(open(src))
-base = os.path.dirname(os.path.abspath(src))
-show["venue"]["gltf"] = os.path.normpath(os.path.join(base, show["venue"]["gltf"]))
-for k, v in show["profiles"].items():
-    if isinstance(v, str):
-        show["profiles"][k] = os.path.join(base, v)
-json.dump(show, open(out, "w"), indent=2)
-PY
+demo_copy "$tmp/words.haze.json" </dev/null
 export HAZE_GUI_PROBE_FILE="$tmp/probe.json"
 probe() {  # probe PYTHON-EXPRESSION: its value on the probe's JSON (p)
   python3 -c 'import json, sys; p = json.load(open(sys.argv[1])); print(eval(sys.argv[2]))' "$HAZE_GUI_PROBE_FILE" "$1"

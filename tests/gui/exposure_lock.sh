@@ -11,20 +11,11 @@ set -uo pipefail
 haze=$1; root=$2
 . "$root/tests/gui/gui_session.bash"
 
-python3 - "$root/examples/demo/demo.haze.json" "$tmp/fade.haze.json" <<'PY' || { echo "FAIL: could not write the show"; exit 1; }
-import json, os, sys
-src, out = sys.argv[1], sys.argv[2]
-show = json.load(open(src))
-base = os.path.dirname(os.path.abspath(src))
-show["venue"]["gltf"] = os.path.normpath(os.path.join(base, show["venue"]["gltf"]))
-for k, v in show["profiles"].items():
-    if isinstance(v, str):
-        show["profiles"][k] = os.path.join(base, v)
+demo_copy "$tmp/fade.haze.json" <<'PY'
 cues = show["cue_lists"][0]["cues"]
 at = next(i for i, c in enumerate(cues) if c["number"] == "4")
 cues.insert(at + 1, {"number": "4.2", "label": "Black", "fade": 6.0,
                      "values": {str(f["id"]): {"intensity": 0.0} for f in show["fixtures"]}})
-json.dump(show, open(out, "w"), indent=2)
 PY
 export HAZE_GUI_PROBE_FILE="$tmp/probe.json"
 probe() {  # probe PYTHON-EXPRESSION: its value on the probe's JSON (p)

@@ -12,20 +12,11 @@ set -uo pipefail
 haze=$1; root=$2
 . "$root/tests/gui/gui_session.bash"
 
-python3 - "$root/examples/demo/demo.haze.json" "$tmp/rig.haze.json" <<'PY' || { echo "FAIL: could not write the show"; exit 1; }
-import json, os, sys
-src, out = sys.argv[1], sys.argv[2]
-show = json.load(open(src))
-base = os.path.dirname(os.path.abspath(src))
-show["venue"]["gltf"] = os.path.normpath(os.path.join(base, show["venue"]["gltf"]))
-for k, v in show["profiles"].items():
-    if isinstance(v, str):
-        show["profiles"][k] = os.path.join(base, v)
+demo_copy "$tmp/rig.haze.json" <<'PY'
 show["fixtures"].reverse()  # 304 ... 101: the tabs must sort
 for f in show["fixtures"]:
     if f["id"] == 104:
         f["patch"] = {"universe": 2, "address": 1}
-json.dump(show, open(out, "w"), indent=2)
 PY
 export HAZE_GUI_PROBE_FILE="$tmp/probe.json"
 probe() {  # probe PYTHON-EXPRESSION: its value on the probe's JSON (p)

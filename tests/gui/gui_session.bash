@@ -100,3 +100,23 @@ wait_exit() {
   for _ in $(seq 600); do kill -0 $pid 2>/dev/null || break; sleep 0.2; done
   if kill -0 $pid 2>/dev/null; then rc=timeout; else wait $pid; rc=$?; fi
 }
+
+# demo_copy OUT: the demo show written to OUT with its venue and profile paths made absolute, so
+# the copy works from the test's own folder. Python on stdin (may be empty) edits `show`, the
+# parsed JSON, before it is written.
+demo_copy() {
+  local edit
+  edit=$(cat)
+  python3 - "$root/examples/demo/demo.haze.json" "$1" "$edit" <<'PY' || { echo "FAIL: could not write the show"; exit 1; }
+import json, os, sys
+src, out, edit = sys.argv[1:4]
+show = json.load(open(src))
+base = os.path.dirname(os.path.abspath(src))
+show["venue"]["gltf"] = os.path.normpath(os.path.join(base, show["venue"]["gltf"]))
+for k, v in show["profiles"].items():
+    if isinstance(v, str):
+        show["profiles"][k] = os.path.join(base, v)
+exec(edit)
+json.dump(show, open(out, "w"), indent=2)
+PY
+}
