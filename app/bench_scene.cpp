@@ -10,7 +10,7 @@
 
 #include "fixtures/photometry.h"
 #include "fixtures/pose.h"
-#include "renderer/scene/scene_builder.h"
+#include "shows/scene/scene_builder.h"
 
 namespace haze {
 namespace {

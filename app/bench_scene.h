@@ -6,8 +6,8 @@
 #pragma once
 
 #include "atmosphere/density_spec.h"
-#include "renderer/scene/frame_state.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/frame_state.h"
+#include "shows/scene/venue.h"
 
 namespace haze {
 

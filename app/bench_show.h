@@ -5,8 +5,8 @@
 #include <string>
 
 #include "fixtures/core/result.h"
-#include "renderer/scene/frame_state.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/frame_state.h"
+#include "shows/scene/venue.h"
 #include "shows/show.h"
 
 namespace haze {

@@ -8,7 +8,7 @@
 #include "app/bench_scene.h"
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
-#include "renderer/scene/image_compare.h"
+#include "shows/scene/image_compare.h"
 
 namespace haze {
 namespace {

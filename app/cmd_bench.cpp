@@ -30,8 +30,8 @@
 #include "renderer/context.h"
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
-#include "renderer/scene/image_compare.h"
-#include "renderer/scene/physics.h"
+#include "shows/scene/image_compare.h"
+#include "shows/scene/physics.h"
 
 namespace haze {
 namespace {

@@ -1,5 +1,5 @@
 // haze compare IMAGE.pfm REFERENCE.pfm [--threshold F] [--max-error E] [--json]: the accuracy
-// metric of renderer/scene/image_compare.h on two PFMs, so shell tests and users read the very
+// metric of shows/scene/image_compare.h on two PFMs, so shell tests and users read the very
 // number the render tests assert on and `haze bench --compare-reference` reports.
 #include <cstdio>
 #include <string>
@@ -8,8 +8,8 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
-#include "renderer/scene/image.h"
-#include "renderer/scene/image_compare.h"
+#include "shows/scene/image.h"
+#include "shows/scene/image_compare.h"
 
 namespace haze {
 namespace {

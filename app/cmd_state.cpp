@@ -10,7 +10,7 @@
 
 #include "shows/frame/atmosphere_field.h"
 #include "shows/hazer_levels.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/venue.h"
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "shows/frame/list_plays.h"

@@ -8,7 +8,7 @@
 #include "shows/frame/atmosphere_field.h"
 #include "app/command_line.h"
 #include "app/commands.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/venue.h"
 #include "shows/show_save.h"
 #include "shows/show_validate.h"
 

@@ -8,7 +8,7 @@
 
 #include "fixtures/core/result.h"
 #include "renderer/output/exr.h"
-#include "renderer/scene/exposure.h"
+#include "shows/scene/exposure.h"
 #include "shows/playback.h"
 #include "shows/show.h"
 

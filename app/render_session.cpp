@@ -6,7 +6,7 @@
 #include "shows/frame/frame_builder.h"
 #include "app/progress.h"
 #include "renderer/reference/reference.h"
-#include "renderer/scene/image.h"
+#include "shows/scene/image.h"
 
 namespace haze {
 

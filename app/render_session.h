@@ -12,7 +12,7 @@
 #include "fixtures/core/result.h"
 #include "renderer/context.h"
 #include "renderer/renderer.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/venue.h"
 
 namespace haze {
 

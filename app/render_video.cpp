@@ -10,7 +10,7 @@
 #include "renderer/output/exr.h"
 #include "renderer/output/frame_files.h"
 #include "renderer/output/video_writer.h"
-#include "renderer/scene/image.h"
+#include "shows/scene/image.h"
 
 namespace haze {
 namespace {

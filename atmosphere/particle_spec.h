@@ -1,5 +1,5 @@
 // What a show says about visible dust in its beams (docs/shows.md, "Particles"): plain data,
-// read and written by shows/, turned into particles by renderer/scene/particles.h.
+// read and written by shows/, turned into particles by shows/scene/particles.h.
 #pragma once
 
 #include <cstdint>

@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "renderer/scene/camera_basis.h"
+#include "shows/scene/camera_basis.h"
 
 namespace haze {
 namespace {

@@ -8,7 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/frame_state.h"
 #include "shaders/interface.h"
 
 namespace haze {

@@ -17,7 +17,7 @@
 #include "renderer/density_resources.h"
 #include "renderer/gl/objects.h"
 #include "renderer/gl/program.h"
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/frame_state.h"
 #include "renderer/sun_pass.h"
 
 namespace haze {

@@ -14,7 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "renderer/scene/depth_pyramid.h"
+#include "shows/scene/depth_pyramid.h"
 
 namespace haze {
 namespace {

@@ -2,7 +2,7 @@
 // BeamOptics::bakeLightMap), a shadow-map layer (depth from the lens), and one entry of the
 // beams storage buffer that every lighting shader reads. Light maps are re-baked only when a
 // beam's opticsKey changes, shadow maps re-rendered only when its poseKey or cone changes or
-// a body that can lie in its cone (renderer/scene/body_shadow.h: another fixture's) moves.
+// a body that can lie in its cone (shows/scene/body_shadow.h: another fixture's) moves.
 //
 // Memory is bounded (docs/rendering.md, "Large rigs"): beams with equal optics share one
 // light-map layer, and the shadow maps' layer size shrinks so that all of them fit a texel
@@ -27,9 +27,9 @@
 #include "renderer/gl/objects.h"
 #include "renderer/gpu_bodies.h"
 #include "renderer/gpu_venue.h"
-#include "renderer/scene/body_shadow.h"
-#include "renderer/scene/frame_state.h"
-#include "renderer/scene/map_schedule.h"
+#include "shows/scene/body_shadow.h"
+#include "shows/scene/frame_state.h"
+#include "shows/scene/map_schedule.h"
 #include "shaders/interface.h"
 
 namespace haze {
@@ -138,7 +138,7 @@ class BeamResources {
   int shadowCapacity_ = 0, shadowSize_ = 0, lightCapacity_ = 0, ssboCapacity_ = 0;
   gl::Texture lightMaps_;
   gl::Texture shadowMaps_;
-  // Per shadow layer, its least depths over blocks (renderer/scene/depth_pyramid.h), R32F mips.
+  // Per shadow layer, its least depths over blocks (shows/scene/depth_pyramid.h), R32F mips.
   gl::Texture shadowMin_;
   gl::Buffer ssbo_;
   gl::Framebuffer shadowFbo_{"shadow_fbo"};

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "renderer/gl/gl.h"
-#include "renderer/scene/camera_basis.h"
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/camera_basis.h"
+#include "shows/scene/frame_state.h"
 
 namespace haze {
 

@@ -8,7 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "renderer/scene/camera_basis.h"
+#include "shows/scene/camera_basis.h"
 #include "shaders/interface.h"
 
 namespace haze {

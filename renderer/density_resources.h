@@ -11,7 +11,7 @@
 
 #include "renderer/beam_resources.h"
 #include "renderer/gl/objects.h"
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/frame_state.h"
 
 namespace haze {
 

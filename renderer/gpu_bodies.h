@@ -47,7 +47,7 @@ class GpuBodies {
   // Parts drawn by the last drawMeshes with a camera (the others were outside its frustum).
   int meshesDrawn() const { return meshesDrawn_; }
   // Depth only: the listed boxes and meshes (indices into update()'s lists) with `program`, the
-  // casters of one beam's shadow map (renderer/scene/body_shadow.h).
+  // casters of one beam's shadow map (shows/scene/body_shadow.h).
   void drawCasters(GLuint program, const std::vector<int>& boxes, const std::vector<int>& meshes) const;
 
  private:

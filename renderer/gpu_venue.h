@@ -13,7 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include "renderer/gl/objects.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/venue.h"
 
 namespace haze {
 

@@ -5,7 +5,7 @@
 
 #include "fixtures/core/result.h"
 #include "renderer/gl/objects.h"
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/frame_state.h"
 #include "shaders/interface.h"
 
 namespace haze {

@@ -1,5 +1,5 @@
 // Visible dust in the beams (docs/rendering.md, "Particles"): after the in-scattering is
-// composited, each particle inside a beam's cone (renderer/scene/particles.h, found on the CPU
+// composited, each particle inside a beam's cone (shows/scene/particles.h, found on the CPU
 // per beam) is drawn as a point sprite with the scene's depth test and added onto the radiance.
 // A display option: nothing is drawn unless frame.particles.settings.enabled.
 #pragma once
@@ -12,7 +12,7 @@
 #include "renderer/beam_resources.h"
 #include "renderer/density_resources.h"
 #include "renderer/gl/objects.h"
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/frame_state.h"
 
 namespace haze {
 

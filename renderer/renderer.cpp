@@ -21,7 +21,7 @@
 #include "renderer/light_tiles.h"
 #include "renderer/sun_pass.h"
 #include "renderer/particle_pass.h"
-#include "renderer/scene/camera_basis.h"
+#include "shows/scene/camera_basis.h"
 #include "shaders/interface.h"
 
 namespace haze {

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "fixtures/core/result.h"
-#include "renderer/scene/exposure.h"
-#include "renderer/scene/frame_state.h"
-#include "renderer/scene/image.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/exposure.h"
+#include "shows/scene/frame_state.h"
+#include "shows/scene/image.h"
+#include "shows/scene/venue.h"
 
 namespace haze {
 
@@ -36,7 +36,7 @@ struct RenderSettings {
   // off, every pixel tries every beam (same image, for tests and the bench).
   bool tiledSurfaces = true;
   // Shadow lookups first ask the shadow maps' least-depth pyramid whether all their taps are
-  // lit (renderer/scene/depth_pyramid.h); off, every lookup takes its taps (same image, for
+  // lit (shows/scene/depth_pyramid.h); off, every lookup takes its taps (same image, for
   // tests and the bench).
   bool shadowMinPyramid = true;
   // The frame's density field, sun, soft shadows and phase function compiled into the planes'
@@ -65,7 +65,7 @@ struct RenderSettings {
 struct DisplaySettings {
   // Display value = L * 2^exposureEv / kKeyNits before the tone curve: at EV 0 a surface of
   // 50 cd/m^2 maps to 1 (a lit stage deck). Always absolute: auto exposure (meter() and
-  // renderer/scene/exposure.h) is resolved by the caller into this number.
+  // shows/scene/exposure.h) is resolved by the caller into this number.
   float exposureEv = 0.0f;
   static constexpr float kKeyNits = kManualKeyNits;
   // Lens glare around bright beams and lamps: the fraction of the light spread over a wide

@@ -10,7 +10,7 @@
 
 #include "renderer/camera_uniforms.h"
 #include "renderer/gl/program.h"
-#include "renderer/scene/physics.h"
+#include "shows/scene/physics.h"
 #include "shaders/interface.h"
 
 namespace haze {

@@ -13,7 +13,7 @@
 #include "renderer/gl/objects.h"
 #include "renderer/density_resources.h"
 #include "renderer/gpu_venue.h"
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/frame_state.h"
 
 namespace haze {
 

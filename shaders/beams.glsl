@@ -18,7 +18,7 @@ layout(location = HAZE_LOC_SOFT_SHADOWS) uniform int uSoftShadows;  // 0: V is t
 #else
 #define SOFT_SHADOWS_ON (uSoftShadows != 0)
 #endif
-// The shadow maps' least depths over blocks (renderer/scene/depth_pyramid.h), the pyramid's levels
+// The shadow maps' least depths over blocks (shows/scene/depth_pyramid.h), the pyramid's levels
 // side by side in one level of each layer (level 0 at the origin, level m >= 1 at x = n_0 above
 // levels 1..m-1): a texel fetch's mip level may not differ from pixel to pixel on llvmpipe, which
 // takes one level per quad. Level m texel i covers the map's texels [i c, (i + 2) c),

@@ -38,7 +38,7 @@
 #define HAZE_UNIT_SUN_SHADOW 15     // sun.glsl: depth seen from the sun (orthographic over the venue's box)
 #define HAZE_UNIT_SUN_PATH 16       // sun.glsl: the integral of D towards the sun, over the density grid
 #define HAZE_UNIT_PARTICLES 17      // particles.vert.glsl: RGBA32F texture buffer, two texels per particle
-#define HAZE_UNIT_SHADOW_MIN 20     // beams.glsl: the shadow maps' least depths (renderer/scene/depth_pyramid.h), R32F array, its levels side by side in level 0
+#define HAZE_UNIT_SHADOW_MIN 20     // beams.glsl: the shadow maps' least depths (shows/scene/depth_pyramid.h), R32F array, its levels side by side in level 0
 // surface.frag.glsl: the surfaces' attributes per pixel from gbuffer.frag.glsl (RGBA32UI): the
 // normal (octahedral, two snorm16), albedo and emission (half floats); the position is the scene
 // depth's, so the G-buffer adds 16 bytes a pixel
@@ -159,7 +159,7 @@
 // costs every sample. The others read the switches from their uniforms.
 
 // ---- Enums --------------------------------------------------------------------------------
-// haze::Phase (renderer/scene/frame_state.h) asserts its values against these.
+// haze::Phase (shows/scene/frame_state.h) asserts its values against these.
 #define HAZE_PHASE_HAZY 0
 #define HAZE_PHASE_ISOTROPIC 1
 #define HAZE_PHASE_HENYEY_GREENSTEIN 2

@@ -37,7 +37,7 @@
 #include "shows/edit/show_document.h"
 #include "shows/movement.h"
 #include "app/render_job.h"
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/frame_state.h"
 
 struct GLFWwindow;
 
@@ -97,7 +97,7 @@ struct Gui {
   Tool tool = Tool::Select;
   std::string placeProfile;  // the library's selection
   Quality quality = Quality::Default;
-  // Exposure (renderer/scene/exposure.h): under auto, exposureEv is an offset from the meter and
+  // Exposure (shows/scene/exposure.h): under auto, exposureEv is an offset from the meter and
   // the shown EV follows the metered one smoothly; under manual it is absolute.
   ExposureMode exposureMode = ExposureMode::Auto;
   float exposureEv = 0.0f;
@@ -112,7 +112,7 @@ struct Gui {
   double frameMs = 0.0;
   int stillFrames = 0;
   // Draft frames are drawn at a share of the viewport's size that keeps them near this many
-  // milliseconds (renderer/scene/draft_scale.h; 0: always the full size). View > Draft budget.
+  // milliseconds (shows/scene/draft_scale.h; 0: always the full size). View > Draft budget.
   double draftBudgetMs = 50.0;
   float draftScale = 1.0f;     // the last draft frame's linear scale
   bool draftLimited = false;   // the budget was not met even at the smallest scale

@@ -30,8 +30,8 @@
 #include "app/gui/window_context.h"
 #include "renderer/gl/gl.h"
 #include "renderer/renderer.h"
-#include "renderer/scene/draft_scale.h"
-#include "renderer/scene/image.h"
+#include "shows/scene/draft_scale.h"
+#include "shows/scene/image.h"
 
 namespace haze {
 namespace {

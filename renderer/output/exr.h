@@ -7,7 +7,7 @@
 #include <string>
 
 #include "fixtures/core/result.h"
-#include "renderer/scene/image.h"
+#include "shows/scene/image.h"
 
 namespace haze {
 

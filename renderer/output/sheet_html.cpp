@@ -2,7 +2,7 @@
 #include "renderer/output/sheet_html.h"
 
 #include "fixtures/core/atomic_file.h"
-#include "renderer/scene/image.h"
+#include "shows/scene/image.h"
 
 namespace haze {
 namespace {

@@ -18,10 +18,10 @@
 
 #include "renderer/reference/cone.h"
 #include "renderer/reference/sun.h"
-#include "renderer/scene/body_hit.h"
-#include "renderer/scene/body_shadow.h"
-#include "renderer/scene/camera_basis.h"
-#include "renderer/scene/physics.h"
+#include "shows/scene/body_hit.h"
+#include "shows/scene/body_shadow.h"
+#include "shows/scene/camera_basis.h"
+#include "shows/scene/physics.h"
 
 namespace haze {
 

@@ -9,10 +9,10 @@
 
 #include <glm/vec3.hpp>
 
-#include "renderer/scene/bvh.h"
-#include "renderer/scene/frame_state.h"
-#include "renderer/scene/image.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/bvh.h"
+#include "shows/scene/frame_state.h"
+#include "shows/scene/image.h"
+#include "shows/scene/venue.h"
 
 namespace haze {
 

@@ -9,7 +9,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "renderer/scene/physics.h"
+#include "shows/scene/physics.h"
 
 namespace haze {
 namespace {

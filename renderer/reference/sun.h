@@ -4,8 +4,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "renderer/scene/bvh.h"
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/bvh.h"
+#include "shows/scene/frame_state.h"
 
 namespace haze {
 

@@ -1,4 +1,4 @@
-// Picking (see picking.h): the camera basis is the renderer's (renderer/scene/camera_basis.h),
+// Picking (see picking.h): the camera basis is the renderer's (shows/scene/camera_basis.h),
 // so that a click lands where the pixel was drawn.
 #include "shows/edit/picking.h"
 
@@ -12,8 +12,8 @@
 
 #include "fixtures/body.h"
 #include "fixtures/pose.h"
-#include "renderer/scene/body_hit.h"
-#include "renderer/scene/camera_basis.h"
+#include "shows/scene/body_hit.h"
+#include "shows/scene/camera_basis.h"
 
 namespace haze {
 

@@ -10,8 +10,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "renderer/scene/bvh.h"
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/bvh.h"
+#include "shows/scene/frame_state.h"
 #include "shows/playback.h"
 #include "shows/show.h"
 

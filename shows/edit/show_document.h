@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "shows/edit/picking.h"
-#include "renderer/scene/bvh.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/bvh.h"
+#include "shows/scene/venue.h"
 #include "shows/playbacks.h"
 #include "shows/edit/edit_change_type.h"
 #include "shows/edit/edit_commands.h"

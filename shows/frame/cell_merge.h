@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/frame_state.h"
 
 namespace haze {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "shows/frame/cell_merge.h"
-#include "renderer/scene/physics.h"
+#include "shows/scene/physics.h"
 
 namespace haze {
 namespace {

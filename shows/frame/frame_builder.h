@@ -7,7 +7,7 @@
 #include <string>
 
 #include "fixtures/core/result.h"
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/frame_state.h"
 #include "shows/playback.h"
 #include "shows/show.h"
 

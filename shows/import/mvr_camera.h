@@ -10,7 +10,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "renderer/scene/bvh.h"
+#include "shows/scene/bvh.h"
 #include "shows/show.h"
 
 namespace haze {

@@ -2,7 +2,8 @@
 # The layering rule (tools/library_rules.cmake) is enforced and documented as built:
 # 1. a configuration with a planted upward link (haze_shows -> haze_renderer) fails, naming it;
 # 2. so does a pure library reaching GL (haze_fixtures -> haze_gl);
-# 3. docs/architecture.md's "Layers" block lists exactly the layers the check uses.
+# 3. so does a link that the layers allow but the folders do not (shows/ -> renderer/);
+# 4. docs/architecture.md's "Layers" block lists exactly the layers and folders the check uses.
 set -euo pipefail
 root=$2
 work=$(mktemp -d)
@@ -23,6 +24,8 @@ plant() {  # FROM TO EXPECTED-MESSAGE
 }
 plant haze_shows haze_renderer "library rule broken: haze_shows -> haze_renderer"
 plant haze_fixtures haze_gl "library rule broken: haze_fixtures -> haze_gl"
+# Allowed by the layers (5 -> 4), refused by the folders: shows/ must not reach into renderer/.
+plant haze_frame haze_reference "library rule broken: haze_frame -> haze_reference (shows/ must not link"
 
 # The layers as the check has them, one line each, and as the doc states them.
 from_cmake=$(sed -n '/^set(HAZE_LAYERS/,/)$/p' "$root/tools/library_rules.cmake" | grep -o '"[^"]*"' | tr -d '"')
@@ -34,3 +37,11 @@ if [ -z "$from_doc" ] || [ "$from_cmake" != "$from_doc" ]; then
   exit 1
 fi
 echo "ok: docs/architecture.md lists the $(echo "$from_cmake" | wc -l) layers the check enforces"
+
+from_cmake=$(sed -n 's/^set(HAZE_FOLDERS \(.*\))$/\1/p' "$root/tools/library_rules.cmake")
+from_doc=$(sed -n 's/^Folders, in order: `\(.*\)`\.$/\1/p' "$root/docs/architecture.md")
+if [ -z "$from_doc" ] || [ "$from_cmake" != "$from_doc" ]; then
+  echo "FAIL: docs/architecture.md's folder order ('$from_doc') differs from HAZE_FOLDERS ('$from_cmake')"
+  exit 1
+fi
+echo "ok: docs/architecture.md states the folder order the check enforces: $from_cmake"

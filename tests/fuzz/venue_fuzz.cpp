@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "fuzz/harness.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/venue.h"
 
 namespace haze::fuzz {
 

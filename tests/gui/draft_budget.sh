@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # While the view moves, draft frames are drawn at a share of the viewport's size that keeps them
-# near the draft budget (renderer/scene/draft_scale.h); when it is still, the full size comes back.
+# near the draft budget (shows/scene/draft_scale.h); when it is still, the full size comes back.
 # Timing-free: a budget of a microsecond is never met on any machine, so the draft must shrink to
 # its smallest scale (a quarter of the width) and say the budget is not met; with no budget or a
 # budget of ten seconds it stays at the viewport's size. And the still view after a shrunken draft

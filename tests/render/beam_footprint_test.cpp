@@ -9,7 +9,7 @@
 
 #include "render_test_util.h"
 #include "renderer/beam_footprint.h"
-#include "renderer/scene/camera_basis.h"
+#include "shows/scene/camera_basis.h"
 
 namespace haze::test {
 namespace {

@@ -20,8 +20,8 @@
 #include "render_test_util.h"
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
-#include "renderer/scene/bvh.h"
-#include "renderer/scene/image_compare.h"
+#include "shows/scene/bvh.h"
+#include "shows/scene/image_compare.h"
 #include "test_data.h"
 
 namespace haze::test {

@@ -18,8 +18,8 @@
 #include "render_test_util.h"
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
-#include "renderer/scene/body_hit.h"
-#include "renderer/scene/bvh.h"
+#include "shows/scene/body_hit.h"
+#include "shows/scene/bvh.h"
 #include "test_data.h"
 
 namespace haze::test {

@@ -15,7 +15,7 @@
 #include "render_test_util.h"
 #include "renderer/gl/gl.h"
 #include "renderer/renderer.h"
-#include "renderer/scene/camera_basis.h"
+#include "shows/scene/camera_basis.h"
 
 namespace haze::test {
 namespace {

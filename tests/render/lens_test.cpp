@@ -17,8 +17,8 @@
 #include "render_test_util.h"
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
-#include "renderer/scene/camera_basis.h"
-#include "renderer/scene/physics.h"
+#include "shows/scene/camera_basis.h"
+#include "shows/scene/physics.h"
 
 namespace haze::test {
 namespace {

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "fixtures/photometry.h"
-#include "renderer/scene/scene_builder.h"
+#include "shows/scene/scene_builder.h"
 #include "test_data.h"
 
 namespace haze::test {

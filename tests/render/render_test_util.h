@@ -1,6 +1,6 @@
 // Helpers for GL render tests: a debug headless context per test (any GL error fails the test),
 // scenes built in code, and the actual/expected/difference PFMs a failed image comparison leaves
-// in the build folder (the comparison itself is renderer/scene/image_compare.h).
+// in the build folder (the comparison itself is shows/scene/image_compare.h).
 #pragma once
 
 #include <filesystem>
@@ -14,9 +14,9 @@
 #include "renderer/context.h"
 #include "renderer/renderer.h"
 #include "renderer/gl/debug.h"
-#include "renderer/scene/frame_state.h"
-#include "renderer/scene/image.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/frame_state.h"
+#include "shows/scene/image.h"
+#include "shows/scene/venue.h"
 
 namespace haze::test {
 

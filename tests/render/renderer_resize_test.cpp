@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "render_test_util.h"
-#include "renderer/scene/image_compare.h"
+#include "shows/scene/image_compare.h"
 #include "renderer/gl/program.h"
 #include "renderer/renderer.h"
 

@@ -1,4 +1,4 @@
-// The shadow maps' least-depth pyramid (renderer/scene/depth_pyramid.h, surelyLit in
+// The shadow maps' least-depth pyramid (shows/scene/depth_pyramid.h, surelyLit in
 // shaders/beams.glsl) only skips shadow taps that would all have found the point lit: with it
 // the image equals, value for value, the image without it, on the bench stage (columns and a
 // slatted panel shadowing the deck and the haze), with soft and with hard shadows, surfaces and

@@ -15,13 +15,13 @@
 
 #include "app/render_session.h"
 #include "render_test_util.h"
-#include "renderer/scene/image.h"
+#include "shows/scene/image.h"
 #include "renderer/reference/reference.h"
 #include "renderer/renderer.h"
-#include "renderer/scene/bvh.h"
-#include "renderer/scene/image_compare.h"
-#include "renderer/scene/physics.h"
-#include "renderer/scene/scene_builder.h"
+#include "shows/scene/bvh.h"
+#include "shows/scene/image_compare.h"
+#include "shows/scene/physics.h"
+#include "shows/scene/scene_builder.h"
 
 namespace haze::test {
 namespace {

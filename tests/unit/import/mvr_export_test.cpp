@@ -19,7 +19,7 @@
 #include "fixtures/facts.h"
 #include "fixtures/gdtf.h"
 #include "fixtures/pose.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/venue.h"
 #include "shows/import/mvr_export.h"
 #include "shows/import/mvr_import.h"
 #include "shows/show.h"

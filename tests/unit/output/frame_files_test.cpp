@@ -11,7 +11,7 @@
 
 #include "renderer/output/exr.h"
 #include "renderer/output/frame_files.h"
-#include "renderer/scene/image.h"
+#include "shows/scene/image.h"
 
 namespace haze {
 namespace {

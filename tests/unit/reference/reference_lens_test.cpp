@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "renderer/reference/reference.h"
-#include "renderer/scene/physics.h"
+#include "shows/scene/physics.h"
 #include "unit/scene/test_scenes.h"
 
 namespace haze {

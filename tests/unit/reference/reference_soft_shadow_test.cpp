@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "renderer/reference/reference.h"
-#include "renderer/scene/physics.h"
+#include "shows/scene/physics.h"
 #include "unit/scene/test_scenes.h"
 
 namespace haze {

@@ -8,7 +8,7 @@
 
 #include "renderer/reference/reference.h"
 #include "renderer/reference/sun.h"
-#include "renderer/scene/physics.h"
+#include "shows/scene/physics.h"
 #include "unit/scene/test_scenes.h"
 
 namespace haze {

@@ -15,7 +15,7 @@
 
 #include "fixtures/photometry.h"
 #include "fixtures/pose.h"
-#include "renderer/scene/physics.h"
+#include "shows/scene/physics.h"
 #include "unit/fixtures/photometry_writers.h"
 
 namespace haze {

@@ -1,4 +1,4 @@
-// Which bodies can shadow a beam (renderer/scene/body_shadow.h): other fixtures' bodies in the
+// Which bodies can shadow a beam (shows/scene/body_shadow.h): other fixtures' bodies in the
 // cone widened by the lens radius, never the beam's own; and the casters' key, on which the GPU
 // caches the beam's shadow map, moves only when a caster does.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 
 #include "fixtures/body.h"
 #include "fixtures/pose.h"
-#include "renderer/scene/body_shadow.h"
+#include "shows/scene/body_shadow.h"
 
 namespace haze {
 namespace {

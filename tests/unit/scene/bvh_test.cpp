@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "renderer/scene/bvh.h"
+#include "shows/scene/bvh.h"
 #include "unit/scene/test_scenes.h"
 
 namespace haze {

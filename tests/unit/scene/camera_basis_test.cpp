@@ -1,4 +1,4 @@
-// The one camera basis (renderer/scene/camera_basis.h): glm::lookAt's in the ordinary case, and
+// The one camera basis (shows/scene/camera_basis.h): glm::lookAt's in the ordinary case, and
 // the documented limit, never NaNs, when up is parallel to the view or the target is the eye.
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "renderer/scene/camera_basis.h"
+#include "shows/scene/camera_basis.h"
 
 namespace haze {
 namespace {

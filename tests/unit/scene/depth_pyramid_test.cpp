@@ -1,4 +1,4 @@
-// The shadow maps' least-depth pyramid (renderer/scene/depth_pyramid.h) must never claim a
+// The shadow maps' least-depth pyramid (shows/scene/depth_pyramid.h) must never claim a
 // depth greater than one of the texels a texel of it covers: a lookup that trusts it skips its
 // shadow taps, so a value too large would light a shadowed point.
 #include <algorithm>
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "renderer/scene/depth_pyramid.h"
+#include "shows/scene/depth_pyramid.h"
 
 namespace haze {
 namespace {

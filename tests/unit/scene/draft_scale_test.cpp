@@ -1,4 +1,4 @@
-#include "renderer/scene/draft_scale.h"
+#include "shows/scene/draft_scale.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The exposure meter (renderer/scene/exposure.h) on known images: a dark stage with a lit deck is
+// The exposure meter (shows/scene/exposure.h) on known images: a dark stage with a lit deck is
 // keyed on its highlights, a uniform scene on its log-average, a blackout stops at the gain
 // limit, and the smoothing moves in EV with its time constant.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "renderer/scene/exposure.h"
+#include "shows/scene/exposure.h"
 
 namespace haze {
 namespace {

@@ -3,7 +3,7 @@
 // must be reported as failures (nothing compared, different sizes).
 #include <gtest/gtest.h>
 
-#include "renderer/scene/image_compare.h"
+#include "shows/scene/image_compare.h"
 
 namespace haze {
 namespace {

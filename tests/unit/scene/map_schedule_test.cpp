@@ -2,7 +2,7 @@
 // the order (longest-waiting first) and the first job's guarantee are checked on what ran.
 #include <gtest/gtest.h>
 
-#include "renderer/scene/map_schedule.h"
+#include "shows/scene/map_schedule.h"
 
 namespace haze {
 namespace {

@@ -1,4 +1,4 @@
-// The particles' placement (renderer/scene/particles.h): stable for a seed and time, moving with
+// The particles' placement (shows/scene/particles.h): stable for a seed and time, moving with
 // the air, only inside the cones, as many as the density asks, thinned to the limit.
 #include <cmath>
 
@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "renderer/scene/particles.h"
+#include "shows/scene/particles.h"
 
 namespace haze {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "renderer/scene/physics.h"
+#include "shows/scene/physics.h"
 #include "unit/scene/test_scenes.h"
 
 namespace haze {

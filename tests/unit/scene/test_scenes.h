@@ -10,15 +10,15 @@
 
 #include "fixtures/beam_optics.h"
 #include "fixtures/photometry.h"
-#include "renderer/scene/frame_state.h"
-#include "renderer/scene/scene_builder.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/frame_state.h"
+#include "shows/scene/scene_builder.h"
+#include "shows/scene/venue.h"
 
 namespace haze::test {
 
 constexpr double kPiD = 3.14159265358979323846;
 
-// The scene builders of the product (renderer/scene/scene_builder.h), under the names the tests use.
+// The scene builders of the product (shows/scene/scene_builder.h), under the names the tests use.
 using haze::addBox;
 using haze::addFloor;
 using haze::addQuad;

@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/scene/venue.h"
+#include "shows/scene/venue.h"
 
 namespace haze {
 namespace {

@@ -10,8 +10,8 @@
 #include <glm/vec3.hpp>
 
 #include "fixtures/body.h"
-#include "renderer/scene/bvh.h"
-#include "renderer/scene/venue.h"
+#include "shows/scene/bvh.h"
+#include "shows/scene/venue.h"
 
 namespace haze {
 

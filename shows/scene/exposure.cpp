@@ -1,4 +1,4 @@
-#include "renderer/scene/exposure.h"
+#include "shows/scene/exposure.h"
 
 #include <algorithm>
 #include <cmath>

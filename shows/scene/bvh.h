@@ -11,7 +11,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "renderer/scene/venue.h"
+#include "shows/scene/venue.h"
 
 namespace haze {
 

@@ -1,4 +1,4 @@
-#include "renderer/scene/physics.h"
+#include "shows/scene/physics.h"
 
 #include <algorithm>
 #include <cmath>

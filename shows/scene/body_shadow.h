@@ -11,7 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "fixtures/body.h"
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/frame_state.h"
 
 namespace haze {
 

@@ -1,5 +1,5 @@
 // Which fixture bodies can shadow a beam (see body_shadow.h).
-#include "renderer/scene/body_shadow.h"
+#include "shows/scene/body_shadow.h"
 
 #include <algorithm>
 #include <cmath>

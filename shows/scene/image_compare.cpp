@@ -1,6 +1,6 @@
 // The accuracy metric (image_compare.h): mean relative error over the values the reference
 // lights, with the leak where it does not.
-#include "renderer/scene/image_compare.h"
+#include "shows/scene/image_compare.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "renderer/scene/depth_pyramid.h"
+#include "shows/scene/depth_pyramid.h"
 
 #include <algorithm>
 #include <cstddef>

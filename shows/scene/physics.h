@@ -4,7 +4,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "renderer/scene/frame_state.h"
+#include "shows/scene/frame_state.h"
 
 namespace haze {
 

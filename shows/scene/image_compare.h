@@ -6,7 +6,7 @@
 #include <cstddef>
 
 #include "fixtures/core/result.h"
-#include "renderer/scene/image.h"
+#include "shows/scene/image.h"
 
 namespace haze {
 

@@ -1,6 +1,6 @@
 // PFM (radiometric float output, what tests compare) and PNG (display) files. Both are written
 // to a temporary name in the target's folder and renamed, so a reader never sees half a file.
-#include "renderer/scene/image.h"
+#include "shows/scene/image.h"
 
 #include <cstdio>
 #include <cstring>

@@ -1,7 +1,7 @@
 // glTF 2.0 -> Venue: walks the default scene's node tree, applies node transforms, and flattens
 // every triangle primitive to world space, so the GPU and the CPU reference see the same
 // triangles. tinygltf does the parsing (Debian ships it as a shared library).
-#include "renderer/scene/venue.h"
+#include "shows/scene/venue.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Venues built in code (see scene_builder.h).
-#include "renderer/scene/scene_builder.h"
+#include "shows/scene/scene_builder.h"
 
 #include <cmath>
 #include <cstdint>

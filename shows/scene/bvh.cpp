@@ -1,7 +1,7 @@
 // The reference's BVH: binned SAH build (16 bins, leaves of at most 4 triangles) and a
 // stack traversal; triangles by Moeller-Trumbore with a tiny barycentric tolerance so rays
 // through a shared edge never slip between two triangles (no cracks in the floor).
-#include "renderer/scene/bvh.h"
+#include "shows/scene/bvh.h"
 
 #include <algorithm>
 #include <array>

@@ -13,7 +13,7 @@
 #include "fixtures/beam_optics.h"
 #include "fixtures/body.h"
 #include "fixtures/pose.h"
-#include "renderer/scene/particles.h"
+#include "shows/scene/particles.h"
 #include "shaders/interface.h"
 
 namespace haze {
@@ -47,7 +47,7 @@ struct MediumState {
 };
 
 // The sun (docs/physics.md, "The sun"): light of illuminance E arriving along one direction
-// everywhere, through the venue's openings. sunDirection (renderer/scene/physics.h) turns a
+// everywhere, through the venue's openings. sunDirection (shows/scene/physics.h) turns a
 // show's azimuth and elevation into `direction`.
 struct SunState {
   bool on = false;

@@ -1,4 +1,4 @@
-#include "renderer/scene/camera_basis.h"
+#include "shows/scene/camera_basis.h"
 
 #include <cmath>
 

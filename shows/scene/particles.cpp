@@ -1,4 +1,4 @@
-#include "renderer/scene/particles.h"
+#include "shows/scene/particles.h"
 
 #include <algorithm>
 #include <cmath>

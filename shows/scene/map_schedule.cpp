@@ -1,4 +1,4 @@
-#include "renderer/scene/map_schedule.h"
+#include "shows/scene/map_schedule.h"
 
 #include <algorithm>
 #include <tuple>

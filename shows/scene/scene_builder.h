@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "renderer/scene/venue.h"
+#include "shows/scene/venue.h"
 
 namespace haze {
 

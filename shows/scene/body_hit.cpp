@@ -1,5 +1,5 @@
 // Rays against posed fixture bodies (see body_hit.h).
-#include "renderer/scene/body_hit.h"
+#include "shows/scene/body_hit.h"
 
 #include <map>
 #include <mutex>
