@@ -45,10 +45,13 @@ vec3 beamIntensity(Beam b, vec3 x, out vec3 wl, out float r) {
 }
 
 // Whether every shadow-map texel in the box [lo, hi] (map units), with a texel of margin for
-// the sampler's rounding, lies at depth z or beyond: then every tap there is lit (no blocker,
-// every compare passes) and V is exactly 1, from one texel of the pyramid instead of the taps.
-// Most lit points are unshadowed; the taps cost most of the surfaces and of the walks.
-bool surelyLitBox(Beam b, vec2 lo, vec2 hi, float z) {
+// the sampler's rounding, lies at or beyond the depth its taps compare against: then every tap
+// there is lit (no blocker, every compare passes) and V is exactly 1, from one texel of the
+// pyramid instead of the taps. Most lit points are unshadowed; the taps cost most of the
+// surfaces and of the walks. The taps compare against z + dot(grad, u - centre) at map point u:
+// the receiver's plane through the lookup's point (grad 0 in the medium, see visibilityAt), so
+// the test takes the plane's highest value over the texels the pyramid's texel covers.
+bool surelyLitBox(Beam b, vec2 lo, vec2 hi, float z, vec2 centre, vec2 grad) {
   if (uShadowMinOn == 0) return false;
   float size = float(textureSize(uShadowDepths, 0).x);
   ivec2 l = ivec2(clamp(floor(lo * size) - 1.0, 0.0, size - 1.0));
@@ -64,12 +67,16 @@ bool surelyLitBox(Beam b, vec2 lo, vec2 hi, float z) {
   int q = n0 >> max(m - 1, 0);
   ivec2 origin = ivec2(m > 0 ? n0 : 0, m > 1 ? (n0 - bitCount(n0)) - (q - bitCount(q)) : 0);
   // A shift, not a division: llvmpipe divides integer vectors one lane at a time.
-  ivec2 t = origin + min(l >> (m + HAZE_SHADOW_MIN_FIRST_SHIFT), ivec2(max(1, n0 >> m) - 1));
-  return texelFetch(uShadowMin, ivec3(t, int(b.zb.w)), 0).r >= z;
+  ivec2 cell = min(l >> (m + HAZE_SHADOW_MIN_FIRST_SHIFT), ivec2(max(1, n0 >> m) - 1));
+  // The map texels that pyramid texel covers, [cell c, (cell + 2) c) with c = 2^(m + shift)
+  // texels, in map units; the plane's rise over them, at the corner where it is highest.
+  float c = float(1 << (m + HAZE_SHADOW_MIN_FIRST_SHIFT)) / size;
+  vec2 rlo = vec2(cell) * c, rhi = rlo + 2.0 * c;
+  vec2 rise = max(grad * (rlo - centre), grad * (rhi - centre));
+  return texelFetch(uShadowMin, ivec3(origin + cell, int(b.zb.w)), 0).r >= z + rise.x + rise.y;
 }
 
-// The same for every lookup within `radius` (map units) of s.xy at depth s.z.
-bool surelyLit(Beam b, vec3 s, float radius) { return surelyLitBox(b, s.xy - radius, s.xy + radius, s.z); }
+bool surelyLitBox(Beam b, vec2 lo, vec2 hi, float z) { return surelyLitBox(b, lo, hi, z, lo, vec2(0.0)); }
 
 // What the soft shadows need of a beam, worked out once per pixel and beam: the compiler does
 // not hoist it out of a walk's loop, and every sample would redo it.
@@ -124,7 +131,7 @@ vec2 nextTap(vec2 dir) { return vec2(dir.x * GOLDEN_TURN.x - dir.y * GOLDEN_TURN
 // lookups included; only a loop ends early, once no pixel of the block wants another turn. So
 // every lookup here is in a loop whose count is 0 where it cannot change V (surely lit, no
 // blocker, the other kind of shadow), and the one return is at the end.
-float visibilityAt(Beam b, SoftShadowSetup ss, vec4 c, int blockerTaps, int filterTaps, int hardTaps) {
+float visibilityAt(Beam b, SoftShadowSetup ss, vec4 c, vec2 grad, int blockerTaps, int filterTaps, int hardTaps) {
   vec3 s = c.xyz / c.w * 0.5 + 0.5;
   bool inMap = c.w > 0.0 && all(greaterThanEqual(s.xy, vec2(0.0))) && all(lessThanEqual(s.xy, vec2(1.0)));
   bool soft = SOFT_SHADOWS_ON && b.lens.x > 0.0;
@@ -132,14 +139,14 @@ float visibilityAt(Beam b, SoftShadowSetup ss, vec4 c, int blockerTaps, int filt
   float searchR = soft ? 2.0 * ss.k * invWr : 1.5 * ss.texel;  // soft: blockers from w_r / 3 to w_r
   float turn = 6.28318531 * gShadowTurn;
   gShadowTurn = fract(gShadowTurn + 0.618034);
-  bool lit = !inMap || surelyLit(b, s, searchR);
+  bool lit = !inMap || surelyLitBox(b, s.xy - searchR, s.xy + searchR, s.z, s.xy, grad);
   float blockers = 0.0, sumInvW = 0.0;
   vec2 dir = vec2(cos(turn), sin(turn));
   for (int i = 0; i < (soft && !lit ? blockerTaps : 0); ++i) {
     vec2 uv = s.xy + searchR * sqrt((float(i) + 0.5) / float(blockerTaps)) * dir;
     dir = nextTap(dir);
     float d = texture(uShadowDepths, vec3(uv, b.zb.w)).r;
-    if (d < s.z) {
+    if (d < s.z + dot(grad, uv - s.xy)) {
       blockers += 1.0;
       sumInvW += (2.0 * d - 1.0 + ss.p22) * ss.invP32;
     }
@@ -161,14 +168,14 @@ float visibilityAt(Beam b, SoftShadowSetup ss, vec4 c, int blockerTaps, int filt
     vec2 uv = s.xy + (soft ? r * sqrt((float(i) + 0.5) / float(filterTaps)) * dir : hardOffset);
     dir = nextTap(dir);
     float w = soft || taps == 1 ? 1.0 : (i == 0 ? 0.5 : 0.125);
-    v += w * texture(uShadowMaps, vec4(uv, b.zb.w, s.z));
+    v += w * texture(uShadowMaps, vec4(uv, b.zb.w, s.z + dot(grad, uv - s.xy)));
   }
   return taps == 0 ? 1.0 : (soft ? v / float(taps) : v);
 }
 
 // V in the medium from the point's shadow clip coordinates c.
 float beamVisibilityClip(Beam b, SoftShadowSetup ss, vec4 c) {
-  return visibilityAt(b, ss, c, SOFT_VOLUME_BLOCKER_TAPS, SOFT_VOLUME_FILTER_TAPS, 1);
+  return visibilityAt(b, ss, c, vec2(0.0), SOFT_VOLUME_BLOCKER_TAPS, SOFT_VOLUME_FILTER_TAPS, 1);
 }
 
 float beamVisibilityClip(Beam b, vec4 c) { return beamVisibilityClip(b, softShadowSetup(b), c); }
@@ -176,8 +183,28 @@ float beamVisibilityClip(Beam b, vec4 c) { return beamVisibilityClip(b, softShad
 // V(x) in the medium.
 float beamVisibilityVolume(Beam b, vec3 x) { return beamVisibilityClip(b, b.shadowViewProj * vec4(x, 1.0)); }
 
-// V(x) at a surface point: 1 where the lens sees x, 0 in shadow.
-float beamVisibility(Beam b, vec3 x) {
-  return visibilityAt(b, softShadowSetup(b), b.shadowViewProj * vec4(x, 1.0), SOFT_SURFACE_BLOCKER_TAPS,
-                      SOFT_SURFACE_FILTER_TAPS, 5);
+// The plane through x with normal n in shadow-map coordinates, as the rise of the map depth
+// per unit of map u and v: a plane stays a plane under the projection, so the map depth over
+// it is affine in (u, v), and two points beside x on it give the slope exactly. A lookup then
+// compares each tap against the receiver's own plane where the tap lies, not against x's depth
+// everywhere: on a surface slanted to the lens, half of a blocker search would otherwise find
+// the surface itself nearer than x, count it as a blocker and pull the penumbra's estimate
+// towards a hard edge, and no pyramid test could ever clear the point. 0 where the plane is
+// seen edge-on (no slope to speak of in (u, v)).
+vec2 receiverPlaneSlope(mat4 m, vec3 x, vec3 n, float r) {
+  vec3 t1 = normalize(cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+  vec3 t2 = cross(n, t1);
+  vec4 c0 = m * vec4(x, 1.0), c1 = c0 + m * vec4(0.05 * r * t1, 0.0), c2 = c0 + m * vec4(0.05 * r * t2, 0.0);
+  vec3 s0 = c0.xyz / c0.w, d1 = c1.xyz / c1.w - s0, d2 = c2.xyz / c2.w - s0;
+  float det = d1.x * d2.y - d1.y * d2.x;
+  // d1.xy g = d1.z and d2.xy g = d2.z (NDC and map units scale x, y and z alike), by Cramer.
+  vec2 g = vec2(d1.z * d2.y - d1.y * d2.z, d1.x * d2.z - d1.z * d2.x) / det;
+  return abs(det) > 1e-12 && c0.w > 0.0 && all(lessThan(abs(g), vec2(1e4))) ? g : vec2(0.0);
+}
+
+// V(x) at a surface point with normal n (facing the lens), r metres from it: 1 where the lens
+// sees x, 0 in shadow.
+float beamVisibility(Beam b, vec3 x, vec3 n, float r) {
+  return visibilityAt(b, softShadowSetup(b), b.shadowViewProj * vec4(x, 1.0), receiverPlaneSlope(b.shadowViewProj, x, n, r),
+                      SOFT_SURFACE_BLOCKER_TAPS, SOFT_SURFACE_FILTER_TAPS, 5);
 }

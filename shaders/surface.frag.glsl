@@ -42,7 +42,7 @@ vec3 beamIrradiance(int i, vec3 vPosition, vec3 n) {
   mat4 m = b.shadowViewProj;
   float texelPerM = 2.0 / (length(vec3(m[0][0], m[1][0], m[2][0])) * float(textureSize(uShadowMaps, 0).x));
   float slant = sqrt(max(1.0 - cosine * cosine, 0.0));
-  float v = beamVisibility(b, vPosition + n * (max(0.0015, 1.5 * texelPerM * slant) * r));
+  float v = beamVisibility(b, vPosition + n * (max(0.0015, 1.5 * texelPerM * slant) * r), n, r);
   float path = r;
   if (DENSITY_ON) {  // the light's path through D (docs/physics.md, section 9)
     vec2 uv = vec2(dot(wl, b.xb.xyz), dot(wl, b.yb.xyz)) / dot(wl, b.zb.xyz) * b.xb.w * 0.5 + 0.5;
