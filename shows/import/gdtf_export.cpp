@@ -3,11 +3,13 @@
 // as the same modes and channels.
 #include "shows/import/gdtf_export.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include <pugixml.hpp>
 
@@ -24,6 +26,23 @@ struct GdtfAttribute {
 };
 
 // The GDTF attribute of a haze channel; "" for what GDTF in haze's reading has no name for.
+// The slots (0-based, coarse first) that carry the value of the coarse channel at `coarse`: its
+// finer bytes are the mode's channels of the same attribute, wheel and cells with byte 1, 2, and
+// they need not follow it (a QLC+ mode may list Pan, Tilt, Pan fine, Tilt fine).
+std::vector<std::size_t> valueSlots(const DmxMode& m, std::size_t coarse) {
+  const DmxChannel& c = m.channels[coarse];
+  std::vector<std::size_t> slots{coarse};
+  for (int b = 1; b < c.bytes; ++b)
+    for (std::size_t j = 0; j < m.channels.size(); ++j) {
+      const DmxChannel& f = m.channels[j];
+      if (f.byte == b && f.attribute == c.attribute && f.wheel == c.wheel && f.cells == c.cells) {
+        slots.push_back(j);
+        break;
+      }
+    }
+  return slots;
+}
+
 GdtfAttribute gdtfAttribute(const DmxChannel& c) {
   const std::string n = std::to_string(c.wheel + 1);
   switch (c.attribute) {
@@ -166,13 +185,20 @@ Result<GdtfWrite> profileToGdtf(const Profile& profile, const std::string& typeN
   const glm::vec3 lens = profile.lensOffset;
   beam.append_attribute("Position") = position({lens.x, -lens.z, lens.y}).c_str();
   beam.append_attribute("BeamType") = "Wash";
-  beam.append_attribute("BeamAngle") = num(angles.beamDeg()).c_str();
-  beam.append_attribute("FieldAngle") = num(angles.fieldDeg()).c_str();
+  // A Beam is a cone: a distribution that lights more than a half space (a bare lamp's IES)
+  // is written as the widest cone a reader takes, and the report says so.
+  constexpr float kWidestConeDeg = 179.0f;
+  const float beamDeg = std::min(angles.beamDeg(), kWidestConeDeg), fieldDeg = std::min(angles.fieldDeg(), kWidestConeDeg);
+  if (fieldDeg < angles.fieldDeg())
+    out.notCarried.push_back("the light beyond a cone of " + num(kWidestConeDeg) + " degrees (the distribution's field angle is " +
+                             num(angles.fieldDeg()) + ")");
+  beam.append_attribute("BeamAngle") = num(beamDeg).c_str();
+  beam.append_attribute("FieldAngle") = num(fieldDeg).c_str();
   beam.append_attribute("LuminousFlux") = num(lumens).c_str();
   beam.append_attribute("BeamRadius") = num(profile.lensRadiusM).c_str();
   if (profile.photometrySource.kind != PhotometrySource::Kind::Parametric)
-    out.notCarried.push_back("the measured intensity distribution: GDTF's Beam gives beam angle " + num(angles.beamDeg()) +
-                             ", field angle " + num(angles.fieldDeg()) + " degrees and " + num(std::round(lumens)) +
+    out.notCarried.push_back("the measured intensity distribution: GDTF's Beam gives beam angle " + num(beamDeg) +
+                             ", field angle " + num(fieldDeg) + " degrees and " + num(std::round(lumens)) +
                              " lm, from which a reader makes a smooth beam (peak " + num(std::round(profile.distribution->peakCd())) +
                              " cd here)");
 
@@ -187,8 +213,9 @@ Result<GdtfWrite> profileToGdtf(const Profile& profile, const std::string& typeN
       if (c.byte != 0) continue;  // the fine bytes are offsets of their coarse one
       GdtfAttribute a = gdtfAttribute(c);
       if (a.name.empty()) a = {"NoFeature", "Control.Control"};
+      const std::vector<std::size_t> slots = valueSlots(m, i);
       std::string offsets;
-      for (int b = 0; b < c.bytes; ++b) offsets += (b ? "," : "") + std::to_string(i + 1 + static_cast<std::size_t>(b));
+      for (std::size_t slot : slots) offsets += (offsets.empty() ? "" : ",") + std::to_string(slot + 1);
       pugi::xml_node ch = channels.append_child("DMXChannel");
       ch.append_attribute("DMXBreak") = 1;
       ch.append_attribute("Offset") = offsets.c_str();
@@ -200,7 +227,7 @@ Result<GdtfWrite> profileToGdtf(const Profile& profile, const std::string& typeN
       pugi::xml_node f = logical.append_child("ChannelFunction");
       f.append_attribute("Name") = (c.name.empty() ? a.name : c.name).c_str();
       f.append_attribute("Attribute") = a.name.c_str();
-      f.append_attribute("DMXFrom") = ("0/" + std::to_string(c.bytes)).c_str();
+      f.append_attribute("DMXFrom") = ("0/" + std::to_string(slots.size())).c_str();
       f.append_attribute("PhysicalFrom") = num(c.physicalFrom).c_str();
       f.append_attribute("PhysicalTo") = num(c.physicalTo).c_str();
       if (c.attribute == DmxAttribute::Gobo || c.attribute == DmxAttribute::ColorWheel) {

@@ -354,6 +354,111 @@ TEST(MvrShowFormat, UuidIsReadWrittenAndChecked) {
 
 // The demo's native profiles go out as GDTFs written by haze, and the rig comes back: the same
 // fixtures, patch and modes, placed where they were (their GDTF origin is the pivot).
+// A QLC+ definition written for this test whose 16-bit mode lists Pan, Tilt, Pan fine, Tilt fine
+// (the fine bytes do not follow their coarse ones, as in many real definitions).
+constexpr const char* kSplitFineQxf = R"(<?xml version="1.0" encoding="UTF-8"?>
+<FixtureDefinition xmlns="http://www.qlcplus.org/FixtureDefinition">
+ <Creator><Name>haze tests</Name><Version>1</Version><Author>haze</Author></Creator>
+ <Manufacturer>Test</Manufacturer>
+ <Model>Split Fine Spot</Model>
+ <Type>Moving Head</Type>
+ <Channel Name="Pan" Preset="PositionPan"/>
+ <Channel Name="Pan fine" Preset="PositionPanFine"/>
+ <Channel Name="Tilt" Preset="PositionTilt"/>
+ <Channel Name="Tilt fine" Preset="PositionTiltFine"/>
+ <Channel Name="Dimmer" Preset="IntensityDimmer"/>
+ <Channel Name="Colour">
+  <Group Byte="0">Colour</Group>
+  <Capability Min="0" Max="127" Preset="ColorMacro" Res1="#ffffff">White</Capability>
+  <Capability Min="128" Max="255" Preset="ColorMacro" Res1="#ff0000">Red</Capability>
+ </Channel>
+ <Mode Name="16 bit">
+  <Physical>
+   <Bulb Type="LED" Lumens="8000" ColourTemperature="6500"/>
+   <Dimensions Weight="18" Width="300" Height="450" Depth="250"/>
+   <Lens Name="PC" DegreesMin="15" DegreesMax="15"/>
+   <Focus Type="Head" PanMax="540" TiltMax="270"/>
+   <Technical PowerConsumption="300" DmxConnector="5-pin"/>
+  </Physical>
+  <Channel Number="0">Pan</Channel>
+  <Channel Number="1">Tilt</Channel>
+  <Channel Number="2">Pan fine</Channel>
+  <Channel Number="3">Tilt fine</Channel>
+  <Channel Number="4">Dimmer</Channel>
+  <Channel Number="5">Colour</Channel>
+ </Mode>
+ <Physical>
+  <Bulb Type="LED" Lumens="8000" ColourTemperature="6500"/>
+  <Dimensions Weight="18" Width="300" Height="450" Depth="250"/>
+  <Lens Name="PC" DegreesMin="15" DegreesMax="15"/>
+  <Focus Type="Head" PanMax="540" TiltMax="270"/>
+  <Technical PowerConsumption="300" DmxConnector="5-pin"/>
+ </Physical>
+</FixtureDefinition>
+)";
+
+// A show with a QLC+ profile and an IES file as a profile goes out as MVR (both written as GDTF)
+// and comes back with the same fixtures, modes and patch; each GDTF reads back with the
+// profile's channels in their slots (a 16-bit value's bytes where the mode puts them). The IES
+// file is a bare lamp's (field angle over 200 degrees), so its Beam is the widest cone.
+TEST(MvrExport, QlcAndIesProfilesRoundTrip) {
+  auto demo = loadShow(std::filesystem::path(HAZE_SOURCE_DIR) / "examples/demo/demo.haze.json");
+  ASSERT_TRUE(demo.ok()) << demo.error().str();
+  test::TempDir dir("mvr-qlc-ies");
+  std::ofstream(dir / "split-fine.qxf") << kSplitFineQxf;
+  const std::filesystem::path ies =
+      std::filesystem::path(HAZE_SOURCE_DIR) / "tests/data/shared/photometry/ies/hydraapi/ies_4.ies";
+  Show show = *demo;
+  show.profiles["split-fine"] = ProfileRef{.path = (dir / "split-fine.qxf").string()};
+  show.profiles["ies-4"] = ProfileRef{.path = ies.string()};
+  ASSERT_GE(show.fixtures.size(), 3u);
+  show.fixtures[0].profile = "split-fine";
+  show.fixtures[0].mode = "16 bit";
+  show.fixtures[0].patch = Patch{9, 1};
+  show.fixtures[1].profile = "split-fine";
+  show.fixtures[1].mode = "16 bit";
+  show.fixtures[1].patch = Patch{9, 7};
+  show.fixtures[2].profile = "ies-4";
+  show.fixtures[2].mode = "";
+  show.fixtures[2].patch = Patch{9, 13};
+  auto profiles = loadProfiles(show);
+  ASSERT_TRUE(profiles.ok()) << profiles.error().str();
+  show.fixtures[2].mode = profiles->at("ies-4")->modes.front().name;
+  auto out = exportMvr(show, dir / "rig.mvr");
+  ASSERT_TRUE(out.ok()) << out.error().str();
+  auto back = importMvr(dir / "rig.mvr", dir / "back.haze.json", MvrImportOptions{.keepEmbedded = true});
+  ASSERT_TRUE(back.ok()) << back.error().str();
+  Show sorted = back->show;
+  std::sort(sorted.fixtures.begin(), sorted.fixtures.end(), [](const FixtureDef& a, const FixtureDef& b) { return a.id < b.id; });
+  Show expected = show;
+  std::sort(expected.fixtures.begin(), expected.fixtures.end(), [](const FixtureDef& a, const FixtureDef& b) { return a.id < b.id; });
+  for (FixtureDef& f : expected.fixtures)
+    if (f.mode.empty()) f.mode = profiles->at(f.profile)->modes.front().name;
+  expectSameRig(expected, sorted);
+  for (const char* key : {"split-fine", "ies-4"}) {
+    SCOPED_TRACE(key);
+    const Profile& original = *profiles->at(key);
+    ASSERT_TRUE(back->show.profiles.count(key)) << "no profile " << key << " came back";
+    auto g = loadGdtf(back->show.resolve(back->show.profiles.at(key).path));
+    ASSERT_TRUE(g.ok()) << g.error().str();
+    ASSERT_EQ(g->profile->modes.size(), original.modes.size());
+    for (std::size_t m = 0; m < original.modes.size(); ++m) {
+      const DmxMode& a = original.modes[m];
+      const DmxMode& b = g->profile->modes[m];
+      ASSERT_EQ(b.footprint(), a.footprint()) << a.name;
+      for (std::size_t c = 0; c < a.channels.size(); ++c) {
+        EXPECT_EQ(b.channels[c].attribute, a.channels[c].attribute) << a.name << " slot " << c + 1;
+        EXPECT_EQ(b.channels[c].byte, a.channels[c].byte) << a.name << " slot " << c + 1;
+      }
+    }
+  }
+  // The split mode as the test wrote it: pan coarse in slot 1, its fine byte in slot 3.
+  const DmxMode& split = profiles->at("split-fine")->modes.front();
+  EXPECT_EQ(split.channels[0].attribute, DmxAttribute::Pan);
+  EXPECT_EQ(split.channels[2].attribute, DmxAttribute::Pan);
+  EXPECT_EQ(split.channels[2].byte, 1);
+}
+
 TEST(MvrExport, DemoShowWithNativeProfilesRoundTrip) {
   auto demo = loadShow(std::filesystem::path(HAZE_SOURCE_DIR) / "examples/demo/demo.haze.json");
   ASSERT_TRUE(demo.ok()) << demo.error().str();
