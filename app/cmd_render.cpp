@@ -78,11 +78,10 @@ std::string secondsText(double s) {
   return text;
 }
 
-}  // namespace
-
-int runRender(const Args& args) {
+// What the command line says, as parsed, and what checkOptions derives from it.
+struct RenderArgs {
   std::string showPath, cue, list, out, camera, quality = "default", exposureMode, exrPixel = "half", movement = "real",
-                                                       cells = "separate", shadows;
+                                                cells = "separate", shadows;
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
   bool allCues = false, progress = false, caption = false, noBodies = false, particlesOn = false, particlesOff = false;
@@ -92,234 +91,273 @@ int runRender(const Args& args) {
   int fps = 25;
   std::vector<ListPlay> plays;
   std::string playError;
-  CommandLine cli("haze render", kUsage);
-  cli.custom("--play", "LIST=CUE[@MASTER][+GO_S]", [&](const std::string& v) {
+  // Derived by checkOptions.
+  std::optional<FrameRange> frames;
+  std::optional<Timecode> timecode;
+  int rate = 25;
+  bool perFrame = false;  // auto exposure metered on every image, also in a video or an --all-cues run
+};
+
+void declareOptions(CommandLine& cli, RenderArgs& a) {
+  cli.custom("--play", "LIST=CUE[@MASTER][+GO_S]", [&a](const std::string& v) {
     auto p = parseListPlay(v);
-    if (!p && playError.empty()) playError = p.error().message;
-    if (p) plays.push_back(*p);
+    if (!p && a.playError.empty()) a.playError = p.error().message;
+    if (p) a.plays.push_back(*p);
     return true;
   });
-  cli.text("--cue", cue, "a cue number")
-      .flag("--all-cues", allCues)
-      .number("--at", at, 0.0, 1e9, "seconds >= 0")
-      .text("--list", list, "a cue list name")
-      .text("--camera", camera, "a camera name")
-      .integer("--width", width, 1, 16384, "a whole number 1..16384")
-      .integer("--height", height, 1, 16384, "a whole number 1..16384")
-      .choice("--quality", quality, {"draft", "default", "high", "reference"})
-      .number("--exposure", exposure, -100, 100, "a number of EV")
-      .choice("--exposure-mode", exposureMode, {"auto", "manual", "per-frame"})
-      .number("--bloom", bloom, 0, 1, "a fraction 0..1")
-      .choice("--movement", movement, {"real", "instant"})
-      .choice("--cells", cells, {"separate", "merged"})
-      .choice("--shadows", shadows, {"soft", "hard"})
-      .choice("--exr-pixel", exrPixel, {"half", "float"})
-      .text("-o|--output", out, "a file or a folder")
-      .text("--video", video, "a video file (OUT.mp4) or an image sequence (OUT-%05d.png)")
-      .text("--from", from, "a cue number")
-      .text("--to", to, "a cue number")
-      .integer("--fps", fps, 1, 240, "frames per second, 1..240")
-      .number("--hold", hold, 0, 3600, "seconds 0..3600")
-      .number("--duration", duration, 0, 86400, "seconds 0..86400")
-      .text("--codec", codec, "an FFmpeg encoder name")
-      .text("--frames", frameRange, "frames A-B of the video, from 0")
-      .flag("--resume", resume)
-      .flag("--progress", progress)
-      .flag("--caption", caption)
-      .flag("--no-bodies", noBodies)
-      .flag("--particles", particlesOn)
-      .flag("--no-particles", particlesOff)
-      .text("--timeline", timelineFile, "a JSON file of GO times")
-      .text("--timecode", timecodeText, "a timecode hh:mm:ss:ff")
-      .choice("--timecode-rate", timecodeRate, {"24", "25", "30"})
-      .positional(showPath, "show");
-  if (auto done = cli.parse(args)) return *done;
-  const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
-  if (!playError.empty()) return cli.usage("--play " + playError);
-  if (!plays.empty() && (!video.empty() || allCues || !cue.empty() || !list.empty() || !timecodeText.empty()))
-    return cli.usage("--play renders one still of the lists it names; expected no --video, --all-cues, --cue, --list or "
-                "--timecode with it");
-  if (!video.empty() && (!out.empty() || allCues || !cue.empty() || at >= 0))
-    return cli.usage("--video renders a cue range (--from, --to): -o, --all-cues, --cue and --at are for stills");
-  if (video.empty() && (!from.empty() || !to.empty()))
-    return cli.usage("--from and --to choose the cues of a --video");
-  std::optional<FrameRange> frames;
-  if (!frameRange.empty()) {
-    auto parsed = parseFrameRange(frameRange);
-    if (!parsed) return cli.usage(parsed.error().message);
-    frames = *parsed;
-  }
-  if ((frames || resume) && video.empty())
-    return cli.usage("--frames and --resume render part of a --video image sequence (OUT-%05d.png)");
-  if (out.empty() && video.empty())
-    return cli.usage("no output given: -o OUT.png|OUT.pfm|OUT.exr, -o DIR/ with --all-cues, or --video OUT.mp4");
-  if (allCues && !cue.empty()) return cli.usage("--cue and --all-cues exclude each other");
-  std::optional<Timecode> timecode;
-  const int rate = std::stoi(timecodeRate);
-  if (!timecodeText.empty()) {
-    timecode = parseTimecode(timecodeText);
-    if (!timecode || timecode->frames >= rate)
-      return cli.usage("--timecode: expected hh:mm:ss:ff within a day, frames below " + timecodeRate + ", got '" +
-                  timecodeText + "'");
-    if (allCues || !cue.empty() || at >= 0) return cli.usage("--timecode chooses the moment itself: no --cue, --all-cues or --at");
-    if (!from.empty() || !to.empty() || !timelineFile.empty())
-      return cli.usage("--timecode plays the cues at their timecodes: no --from, --to or --timeline with it");
-  }
-  auto q = parseQuality(quality);
-  if (!q) return fail(q.error().str());
-  // per-frame: auto exposure metered on every image, also in a video or an --all-cues run.
-  const bool perFrame = exposureMode == "per-frame";
-  if (perFrame) exposureMode = "auto";
+  cli.text("--cue", a.cue, "a cue number")
+      .flag("--all-cues", a.allCues)
+      .number("--at", a.at, 0.0, 1e9, "seconds >= 0")
+      .text("--list", a.list, "a cue list name")
+      .text("--camera", a.camera, "a camera name")
+      .integer("--width", a.width, 1, 16384, "a whole number 1..16384")
+      .integer("--height", a.height, 1, 16384, "a whole number 1..16384")
+      .choice("--quality", a.quality, {"draft", "default", "high", "reference"})
+      .number("--exposure", a.exposure, -100, 100, "a number of EV")
+      .choice("--exposure-mode", a.exposureMode, {"auto", "manual", "per-frame"})
+      .number("--bloom", a.bloom, 0, 1, "a fraction 0..1")
+      .choice("--movement", a.movement, {"real", "instant"})
+      .choice("--cells", a.cells, {"separate", "merged"})
+      .choice("--shadows", a.shadows, {"soft", "hard"})
+      .choice("--exr-pixel", a.exrPixel, {"half", "float"})
+      .text("-o|--output", a.out, "a file or a folder")
+      .text("--video", a.video, "a video file (OUT.mp4) or an image sequence (OUT-%05d.png)")
+      .text("--from", a.from, "a cue number")
+      .text("--to", a.to, "a cue number")
+      .integer("--fps", a.fps, 1, 240, "frames per second, 1..240")
+      .number("--hold", a.hold, 0, 3600, "seconds 0..3600")
+      .number("--duration", a.duration, 0, 86400, "seconds 0..86400")
+      .text("--codec", a.codec, "an FFmpeg encoder name")
+      .text("--frames", a.frameRange, "frames A-B of the video, from 0")
+      .flag("--resume", a.resume)
+      .flag("--progress", a.progress)
+      .flag("--caption", a.caption)
+      .flag("--no-bodies", a.noBodies)
+      .flag("--particles", a.particlesOn)
+      .flag("--no-particles", a.particlesOff)
+      .text("--timeline", a.timelineFile, "a JSON file of GO times")
+      .text("--timecode", a.timecodeText, "a timecode hh:mm:ss:ff")
+      .choice("--timecode-rate", a.timecodeRate, {"24", "25", "30"})
+      .positional(a.showPath, "show");
+}
 
-  auto checked = cli.readShow(showPath);
-  if (!checked) return kExitBadInput;
-  const Show* show = &checked->show;
-  const ProfileSet* profiles = &checked->profiles;
-  RenderJobOptions options{.camera = camera, .width = static_cast<int>(width), .height = static_cast<int>(height),
-                           .quality = *q, .exposureMode = parseExposureMode(exposureMode),
-                           .bloom = static_cast<float>(bloom), .mergeCells = cells == "merged", .bodies = !noBodies,
-                           .exrPixel = *parseExrPixel(exrPixel), .progress = progress};
-  if (!std::isnan(exposure)) options.exposureEv = static_cast<float>(exposure);
-  if (!shadows.empty()) options.softShadows = shadows == "soft";
-  if (particlesOn && particlesOff) return cli.usage("--particles and --no-particles exclude each other");
-  if (particlesOn || particlesOff) options.particles = particlesOn;
-  if (!plays.empty()) {
-    auto state = playListsAt(*show, *profiles, plays, at < 0 ? 1e9 : at, movement == "real");
-    if (!state) return fail(state.error().str());
-    auto session = RenderSession::open(*show, options);
-    if (!session) return fail(session.error().str());
-    (*session)->setHazers(hazersOfPlays(*show, plays, at >= 0));
-    const std::string comment = "haze render of " + showPath + ", cue lists " + describeListPlays(plays) +
-                                (at >= 0 ? ", " + secondsText(at) + " s after time 0" : ", their fades done");
-    const Status s = (*session)->renderToFile(*show, *profiles, *state, out, comment, at < 0 ? 0.0 : at);
-    if (!s) return fail(s.error().str());
-    return 0;
+// The options that exclude or need each other; the usage line of the first broken rule, or none.
+std::optional<std::string> checkOptions(RenderArgs& a) {
+  if (!a.playError.empty()) return "--play " + a.playError;
+  const bool still = !a.cue.empty() || a.allCues || a.at >= 0;
+  if (!a.plays.empty() && (!a.video.empty() || a.allCues || !a.cue.empty() || !a.list.empty() || !a.timecodeText.empty()))
+    return "--play renders one still of the lists it names; expected no --video, --all-cues, --cue, --list or --timecode with it";
+  if (!a.video.empty() && (!a.out.empty() || still))
+    return "--video renders a cue range (--from, --to): -o, --all-cues, --cue and --at are for stills";
+  if (a.video.empty() && (!a.from.empty() || !a.to.empty())) return "--from and --to choose the cues of a --video";
+  if (!a.frameRange.empty()) {
+    auto parsed = parseFrameRange(a.frameRange);
+    if (!parsed) return parsed.error().message;
+    a.frames = *parsed;
   }
-  const CueList* cueList = show->findCueList(list);
-  if (!cueList) return fail(showPath + ": no cue list" + (list.empty() ? "" : " named '" + list + "'"));
-  if (cueList->cues.empty()) return fail(showPath + ": cue list '" + cueList->name + "' has no cues");
-  if (timecode && std::none_of(cueList->cues.begin(), cueList->cues.end(), [](const Cue& c) { return !c.timecode.empty(); }))
-    return fail(showPath + ": cue list '" + cueList->name + "' has no cue with a timecode");
-
-  auto session = RenderSession::open(*show, options);
-  if (!session) return fail(session.error().str());
-  // A video or an --all-cues run under auto exposure is metered once, on the brightest of its cues
-  // (app/exposure_lock.h), so fades and the balance between cues show as they are on stage.
-  const auto lockExposure = [&](size_t from, size_t to) -> Status {
-    if (perFrame || exposureChoiceFor(*show, options).mode != ExposureMode::Auto) return Ok{};
-    auto metered = meterCueList(**session, *show, *profiles, *cueList, from, to);
-    if (!metered) return metered.error();
-    (*session)->lockMeteredEv(metered->meteredEv);
-    // Said where progress is (a terminal, --progress): a script's stderr stays for errors.
-    if (progress || Progress::stderrIsTerminal())
-      std::fprintf(stderr, "haze render: exposure metered once, on cue %s (the brightest); --exposure-mode per-frame "
-                   "meters every image\n", cueList->cues[metered->cue].number.c_str());
-    return Ok{};
-  };
-
-  if (!video.empty()) {
-    VideoJob job{.codec = codec, .out = video, .progress = progress, .caption = caption, .frames = frames,
-                 .resume = resume};
-    VideoPlan& plan = job.plan;
-    plan.list = cueList;
-    plan.to = cueList->cues.size() - 1;
-    plan.holdS = hold;
-    plan.durationS = duration;
-    plan.fps = fps;
-    plan.realMovement = movement == "real";
-    plan.timecodeStart = timecode;
-    plan.timecodeRate = rate;
-    for (auto [number, index] : {std::pair{&from, &plan.from}, std::pair{&to, &plan.to}}) {
-      if (number->empty()) continue;
-      auto found = findCue(*cueList, *number);
-      if (!found) return fail(showPath + ": " + found.error().message);
-      *index = *found;
-    }
-    if (!timelineFile.empty()) {
-      if (!from.empty() || !to.empty()) return cli.usage("--timeline gives the GOs itself: no --from or --to with it");
-      auto timeline = readTimeline(timelineFile, *show, *cueList, hold);
-      if (!timeline) return fail(timeline.error().str());
-      plan.timeline = std::move(*timeline);
-    }
-    if (plan.from > plan.to)
-      return fail("--from " + cueList->cues[plan.from].number + " comes after --to " + cueList->cues[plan.to].number +
-                  " in cue list '" + cueList->name + "'");
-    const bool wholeList = plan.timeline || plan.timecodeStart;
-    if (Status s = lockExposure(wholeList ? 0 : plan.from - (plan.from > 0 ? 1 : 0),
-                                wholeList ? cueList->cues.size() - 1 : plan.to);
-        !s)
-      return fail(s.error().str());
-    const auto s = renderVideo(**session, *show, *profiles, job);
-    if (!s) return fail(s.error().str());
-    std::printf("%s\n", video.c_str());
-    // What a farm's task did, for its log: how much of its range it had to draw.
-    if (frames || resume)
-      std::printf("frames %s: %d, %d drawn, %d repeated, %d complete already\n",
-                  frames ? frameRange.c_str() : "all", s->frames, s->drawn, s->frames - s->drawn - s->skipped,
-                  s->skipped);
-    return 0;
+  if ((a.frames || a.resume) && a.video.empty())
+    return "--frames and --resume render part of a --video image sequence (OUT-%05d.png)";
+  if (a.out.empty() && a.video.empty())
+    return "no output given: -o OUT.png|OUT.pfm|OUT.exr, -o DIR/ with --all-cues, or --video OUT.mp4";
+  if (a.allCues && !a.cue.empty()) return "--cue and --all-cues exclude each other";
+  a.rate = std::stoi(a.timecodeRate);
+  if (!a.timecodeText.empty()) {
+    a.timecode = parseTimecode(a.timecodeText);
+    if (!a.timecode || a.timecode->frames >= a.rate)
+      return "--timecode: expected hh:mm:ss:ff within a day, frames below " + a.timecodeRate + ", got '" + a.timecodeText + "'";
+    if (still) return "--timecode chooses the moment itself: no --cue, --all-cues or --at";
+    if (!a.from.empty() || !a.to.empty() || !a.timelineFile.empty())
+      return "--timecode plays the cues at their timecodes: no --from, --to or --timeline with it";
   }
+  if (a.particlesOn && a.particlesOff) return "--particles and --no-particles exclude each other";
+  if (!a.timelineFile.empty() && (!a.from.empty() || !a.to.empty()))
+    return "--timeline gives the GOs itself: no --from or --to with it";
+  a.perFrame = a.exposureMode == "per-frame";
+  if (a.perFrame) a.exposureMode = "auto";
+  return std::nullopt;
+}
 
-  auto renderCue = [&](size_t index, const std::filesystem::path& file) -> bool {
-    const StageState state = at < 0 ? trackedState(*show, *profiles, *cueList, index)
-                             : movement == "real" ? movingStateAt(*show, *profiles, *cueList, index, at)
-                                                  : stateAt(*show, *profiles, *cueList, index, at);
-    if (at < 0)
-      (*session)->setHazers(hazerSchedule(*show, {{cueList, index}}, {}));
-    else if (index > 0)
-      (*session)->setHazers(hazerSchedule(*show, {{cueList, index - 1}}, {{cueList, index, 0.0}}));
-    else
-      (*session)->setHazers(hazerSchedule(*show, {}, {{cueList, index, 0.0}}));
-    const Cue& c = cueList->cues[index];
-    const std::string comment = "haze render of " + showPath + ", cue list " + cueList->name + ", cue " + c.number +
-                                (c.label.empty() ? "" : " \"" + c.label + "\"") +
-                                (at >= 0 ? ", " + secondsText(at) + " s after GO" : ", its full state");
-    const Status s = (*session)->renderToFile(*show, *profiles, state, file, comment, at < 0 ? 0.0 : at);
-    if (!s) {
-      fail(s.error().str());
-      return false;
-    }
-    return true;
-  };
+RenderJobOptions jobOptions(const RenderArgs& a) {
+  RenderJobOptions o{.camera = a.camera, .width = a.width, .height = a.height, .quality = *parseQuality(a.quality),
+                     .exposureMode = parseExposureMode(a.exposureMode), .bloom = static_cast<float>(a.bloom),
+                     .mergeCells = a.cells == "merged", .bodies = !a.noBodies, .exrPixel = *parseExrPixel(a.exrPixel),
+                     .progress = a.progress};
+  if (!std::isnan(a.exposure)) o.exposureEv = static_cast<float>(a.exposure);
+  if (!a.shadows.empty()) o.softShadows = a.shadows == "soft";
+  if (a.particlesOn || a.particlesOff) o.particles = a.particlesOn;
+  return o;
+}
 
-  if (timecode) {
-    // One copy of the firing rule: a still is the first reading of a timecode, which chases.
-    LivePlayback playback(*show, *profiles, cueList);
-    playback.timecode(*timecode, rate, 0.0);
-    const StageState state = playback.stage(0.0, {}, {});
-    const auto current = playback.currentCue();
-    if (current) (*session)->setHazers(hazerSchedule(*show, {{cueList, *current}}, {}));
-    const std::string where = current ? "cue " + cueList->cues[*current].number : "before the first timed cue";
-    std::fprintf(stderr, "haze render: timecode %s: %s\n", timecode->str().c_str(), where.c_str());
-    const std::string comment = "haze render of " + showPath + ", cue list " + cueList->name + ", timecode " +
-                                timecode->str() + " (" + where + ")";
-    const Status s = (*session)->renderToFile(*show, *profiles, state, out, comment, 0.0);
-    if (!s) return fail(s.error().str());
-    return 0;
+// One render, from the show read and checked: what every mode below shares.
+struct RenderRun {
+  const RenderArgs& args;
+  const CommandLine& cli;
+  const Show& show;
+  const ProfileSet& profiles;
+  RenderJobOptions options;
+  int fail(const std::string& line) const { return cli.fail(line); }
+};
+
+// --play: several lists at once, one still.
+int renderPlays(const RenderRun& r) {
+  const RenderArgs& a = r.args;
+  auto state = playListsAt(r.show, r.profiles, a.plays, a.at < 0 ? 1e9 : a.at, a.movement == "real");
+  if (!state) return r.fail(state.error().str());
+  auto session = RenderSession::open(r.show, r.options);
+  if (!session) return r.fail(session.error().str());
+  (*session)->setHazers(hazersOfPlays(r.show, a.plays, a.at >= 0));
+  const std::string comment = "haze render of " + a.showPath + ", cue lists " + describeListPlays(a.plays) +
+                              (a.at >= 0 ? ", " + secondsText(a.at) + " s after time 0" : ", their fades done");
+  const Status s = (*session)->renderToFile(r.show, r.profiles, *state, a.out, comment, a.at < 0 ? 0.0 : a.at);
+  return s ? 0 : r.fail(s.error().str());
+}
+
+// A video or an --all-cues run under auto exposure is metered once, on the brightest of its cues
+// (app/exposure_lock.h), so fades and the balance between cues show as they are on stage.
+Status lockExposure(const RenderRun& r, RenderSession& session, const CueList& list, size_t from, size_t to) {
+  if (r.args.perFrame || exposureChoiceFor(r.show, r.options).mode != ExposureMode::Auto) return Ok{};
+  auto metered = meterCueList(session, r.show, r.profiles, list, from, to);
+  if (!metered) return metered.error();
+  session.lockMeteredEv(metered->meteredEv);
+  // Said where progress is (a terminal, --progress): a script's stderr stays for errors.
+  if (r.args.progress || Progress::stderrIsTerminal())
+    std::fprintf(stderr, "haze render: exposure metered once, on cue %s (the brightest); --exposure-mode per-frame "
+                 "meters every image\n", list.cues[metered->cue].number.c_str());
+  return Ok{};
+}
+
+// --video: the cue range played as on stage (shows/frame/video_timeline.h).
+int renderVideoRange(const RenderRun& r, RenderSession& session, const CueList& list) {
+  const RenderArgs& a = r.args;
+  VideoJob job{.codec = a.codec, .out = a.video, .progress = a.progress, .caption = a.caption, .frames = a.frames,
+               .resume = a.resume};
+  VideoPlan& plan = job.plan;
+  plan.list = &list;
+  plan.to = list.cues.size() - 1;
+  plan.holdS = a.hold;
+  plan.durationS = a.duration;
+  plan.fps = a.fps;
+  plan.realMovement = a.movement == "real";
+  plan.timecodeStart = a.timecode;
+  plan.timecodeRate = a.rate;
+  for (auto [number, index] : {std::pair{&a.from, &plan.from}, std::pair{&a.to, &plan.to}}) {
+    if (number->empty()) continue;
+    auto found = findCue(list, *number);
+    if (!found) return r.fail(a.showPath + ": " + found.error().message);
+    *index = *found;
   }
-
-  if (allCues) {
-    const std::filesystem::path dir(out);
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) return fail(out + ": cannot create the folder: " + ec.message());
-    if (Status s = lockExposure(0, cueList->cues.size() - 1); !s) return fail(s.error().str());
-    Progress report("haze render", "cues", static_cast<long>(cueList->cues.size()), progress);
-    for (size_t i = 0; i < cueList->cues.size(); ++i) {
-      const auto file = dir / ("cue-" + cueList->cues[i].number + ".png");
-      if (!renderCue(i, file)) return 1;
-      report.step(static_cast<long>(i + 1));
-      std::printf("%s\n", file.string().c_str());
-    }
-    return 0;
+  if (!a.timelineFile.empty()) {
+    auto timeline = readTimeline(a.timelineFile, r.show, list, a.hold);
+    if (!timeline) return r.fail(timeline.error().str());
+    plan.timeline = std::move(*timeline);
   }
+  if (plan.from > plan.to)
+    return r.fail("--from " + list.cues[plan.from].number + " comes after --to " + list.cues[plan.to].number +
+                  " in cue list '" + list.name + "'");
+  const bool wholeList = plan.timeline || plan.timecodeStart;
+  if (Status s = lockExposure(r, session, list, wholeList ? 0 : plan.from - (plan.from > 0 ? 1 : 0),
+                              wholeList ? list.cues.size() - 1 : plan.to);
+      !s)
+    return r.fail(s.error().str());
+  const auto s = renderVideo(session, r.show, r.profiles, job);
+  if (!s) return r.fail(s.error().str());
+  std::printf("%s\n", a.video.c_str());
+  // What a farm's task did, for its log: how much of its range it had to draw.
+  if (a.frames || a.resume)
+    std::printf("frames %s: %d, %d drawn, %d repeated, %d complete already\n", a.frames ? a.frameRange.c_str() : "all",
+                s->frames, s->drawn, s->frames - s->drawn - s->skipped, s->skipped);
+  return 0;
+}
+
+// --timecode: one still, the first reading of a timecode (one copy of the firing rule: the
+// live engine's, which chases).
+int renderTimecodeStill(const RenderRun& r, RenderSession& session, const CueList& list) {
+  const RenderArgs& a = r.args;
+  LivePlayback playback(r.show, r.profiles, &list);
+  playback.timecode(*a.timecode, a.rate, 0.0);
+  const StageState state = playback.stage(0.0, {}, {});
+  const auto current = playback.currentCue();
+  if (current) session.setHazers(hazerSchedule(r.show, {{&list, *current}}, {}));
+  const std::string where = current ? "cue " + list.cues[*current].number : "before the first timed cue";
+  std::fprintf(stderr, "haze render: timecode %s: %s\n", a.timecode->str().c_str(), where.c_str());
+  const std::string comment = "haze render of " + a.showPath + ", cue list " + list.name + ", timecode " +
+                              a.timecode->str() + " (" + where + ")";
+  const Status s = session.renderToFile(r.show, r.profiles, state, a.out, comment, 0.0);
+  return s ? 0 : r.fail(s.error().str());
+}
+
+// One cue's still: its full (tracked) state, or --at seconds after its GO.
+Status renderCueStill(const RenderRun& r, RenderSession& session, const CueList& list, size_t index,
+                      const std::filesystem::path& file) {
+  const RenderArgs& a = r.args;
+  const StageState state = a.at < 0 ? trackedState(r.show, r.profiles, list, index)
+                           : a.movement == "real" ? movingStateAt(r.show, r.profiles, list, index, a.at)
+                                                  : stateAt(r.show, r.profiles, list, index, a.at);
+  if (a.at < 0)
+    session.setHazers(hazerSchedule(r.show, {{&list, index}}, {}));
+  else if (index > 0)
+    session.setHazers(hazerSchedule(r.show, {{&list, index - 1}}, {{&list, index, 0.0}}));
+  else
+    session.setHazers(hazerSchedule(r.show, {}, {{&list, index, 0.0}}));
+  const Cue& c = list.cues[index];
+  const std::string comment = "haze render of " + a.showPath + ", cue list " + list.name + ", cue " + c.number +
+                              (c.label.empty() ? "" : " \"" + c.label + "\"") +
+                              (a.at >= 0 ? ", " + secondsText(a.at) + " s after GO" : ", its full state");
+  return session.renderToFile(r.show, r.profiles, state, file, comment, a.at < 0 ? 0.0 : a.at);
+}
+
+// --all-cues: one PNG per cue into a folder, under one metered exposure.
+int renderAllCues(const RenderRun& r, RenderSession& session, const CueList& list) {
+  const std::filesystem::path dir(r.args.out);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return r.fail(r.args.out + ": cannot create the folder: " + ec.message());
+  if (Status s = lockExposure(r, session, list, 0, list.cues.size() - 1); !s) return r.fail(s.error().str());
+  Progress report("haze render", "cues", static_cast<long>(list.cues.size()), r.args.progress);
+  for (size_t i = 0; i < list.cues.size(); ++i) {
+    const auto file = dir / ("cue-" + list.cues[i].number + ".png");
+    if (Status s = renderCueStill(r, session, list, i, file); !s) return r.fail(s.error().str());
+    report.step(static_cast<long>(i + 1));
+    std::printf("%s\n", file.string().c_str());
+  }
+  return 0;
+}
+
+// Everything but --play renders from one cue list: a video, a timecode's still, every cue, or one.
+int renderFromList(const RenderRun& r) {
+  const RenderArgs& a = r.args;
+  const CueList* list = r.show.findCueList(a.list);
+  if (!list) return r.fail(a.showPath + ": no cue list" + (a.list.empty() ? "" : " named '" + a.list + "'"));
+  if (list->cues.empty()) return r.fail(a.showPath + ": cue list '" + list->name + "' has no cues");
+  if (a.timecode && std::none_of(list->cues.begin(), list->cues.end(), [](const Cue& c) { return !c.timecode.empty(); }))
+    return r.fail(a.showPath + ": cue list '" + list->name + "' has no cue with a timecode");
+  auto session = RenderSession::open(r.show, r.options);
+  if (!session) return r.fail(session.error().str());
+  if (!a.video.empty()) return renderVideoRange(r, **session, *list);
+  if (a.timecode) return renderTimecodeStill(r, **session, *list);
+  if (a.allCues) return renderAllCues(r, **session, *list);
   size_t index = 0;
-  if (!cue.empty()) {
-    auto found = findCue(*cueList, cue);
-    if (!found) return fail(found.error().str());
+  if (!a.cue.empty()) {
+    auto found = findCue(*list, a.cue);
+    if (!found) return r.fail(found.error().str());
     index = *found;
   }
-  return renderCue(index, out) ? 0 : 1;
+  const Status s = renderCueStill(r, **session, *list, index, a.out);
+  return s ? 0 : r.fail(s.error().str());
+}
+
+}  // namespace
+
+int runRender(const Args& args) {
+  RenderArgs a;
+  CommandLine cli("haze render", kUsage);
+  declareOptions(cli, a);
+  if (auto done = cli.parse(args)) return *done;
+  if (auto wrong = checkOptions(a)) return cli.usage(*wrong);
+  auto checked = cli.readShow(a.showPath);
+  if (!checked) return kExitBadInput;
+  const RenderRun run{.args = a, .cli = cli, .show = checked->show, .profiles = checked->profiles, .options = jobOptions(a)};
+  return a.plays.empty() ? renderFromList(run) : renderPlays(run);
 }
 
 }  // namespace haze
