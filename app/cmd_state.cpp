@@ -43,129 +43,143 @@ constexpr const char* kUsage =
     "               its angle at --at (\"gobo_spin\", \"gobo_angle\", ..., \"animation_angle\") where they\n"
     "               are in}}\n";
 
-}  // namespace
-
-int runState(const Args& args) {
+struct StateArgs {
   std::string file, cueNumber, listName, movement = "real";
   double atS = 1e9;  // no --at: the cue's full state
   bool json = false, follow = false;
   std::vector<ListPlay> plays;
   std::string playError;
-  CommandLine cli("haze state", kUsage);
-  cli.custom("--play", "LIST=CUE[@MASTER][+GO_S]", [&](const std::string& v) {
-    auto p = parseListPlay(v);
-    if (!p) {
-      if (playError.empty()) playError = p.error().message;
-      return true;  // reported below with the reason
-    }
-    plays.push_back(*p);
-    return true;
-  });
-  cli.text("--cue", cueNumber, "a cue number")
-      .number("--at", atS, 0.0, 1e9, "a time in seconds (a number, not negative)")
-      .text("--list", listName, "a cue list name")
-      .flag("--json", json)
-      .flag("--follow", follow)
-      .choice("--movement", movement, {"real", "instant"})
-      .positional(file, "show");
-  if (auto done = cli.parse(args)) return *done;
-  if (!playError.empty()) return cli.usage("--play " + playError);
-  if (!plays.empty() && (!cueNumber.empty() || !listName.empty()))
-    return cli.usage("--play names its lists and cues itself; expected no --cue or --list with it");
-  if (cueNumber.empty() && plays.empty()) return cli.usage("expected --cue N (or --play LIST=CUE)");
+  bool atGiven() const { return atS < 1e9; }
+};
 
-  auto checked = cli.readShow(file);
-  if (!checked) return kExitBadInput;
-  const Show* show = &checked->show;
-  const ProfileSet* profiles = &checked->profiles;
+// What the playback gives at that moment: the fixtures and the hazers' levels over the same
+// playback (docs/shows.md, "Hazers in cues").
+struct PlayedState {
   StageState state;
-  HazerSchedule hazers;  // the hazers' levels over the same playback (docs/shows.md, "Hazers in cues")
-  const bool atGiven = atS < 1e9;
-  if (!plays.empty()) {
-    hazers = hazersOfPlays(*show, plays, atGiven);
-    auto played = playListsAt(*show, *profiles, plays, atS, movement == "real");
-    if (!played) {
-      std::cerr << played.error().str() << "\n";
-      return 1;
-    }
-    state = std::move(*played);
-  } else {
-    const CueList* list = show->findCueList(listName);
-    if (!list) {
-      std::cerr << file << ": " << (listName.empty() ? "the show has no cue lists" : "no cue list \"" + listName + "\"")
-                << "\n";
-      return 1;
-    }
-    auto cue = findCue(*list, cueNumber);
-    if (!cue) {
-      std::cerr << file << ": " << cue.error().message << "\n";
-      return 1;
-    }
-    if (!atGiven)
-      hazers = hazerSchedule(*show, {{list, *cue}}, {});
-    else if (*cue > 0)
-      hazers = hazerSchedule(*show, {{list, *cue - 1}}, {{list, *cue, 0.0}});
-    else
-      hazers = hazerSchedule(*show, {}, {{list, *cue, 0.0}});
-    if (follow) {
-      CuePlayer player(*show, *profiles, *list);
-      if (*cue > 0) player.jumpTo(*cue - 1, 0.0);
-      player.gotoCue(*cue, 0.0);
-      if (movement == "real") {
-        state = followCommand(
-            *show, *profiles, [&](double t) { return player.state(t); },
-            [&](double t) { return !player.fading(t) && !player.nextFollowAtS(); }, atS);
-      } else {
-        state = player.state(atS);
-      }
-    } else {
-      state = movement == "real" ? movingStateAt(*show, *profiles, *list, *cue, atS)
-                                 : stateAt(*show, *profiles, *list, *cue, atS);
-    }
-  }
+  HazerSchedule hazers;
+};
 
-  // The strobe runs on the playback clock, which starts at GO: --at is also the gate's time.
-  nlohmann::ordered_json out = stageStateJson(*show, *profiles, state, atGiven ? std::optional<double>(atS) : std::nullopt);
-  // The density field at that time (docs/shows.md, "Density"), summed up.
-  if (const auto& spec = show->atmosphere.density) {
-    glm::vec3 lo{0.0f}, hi{0.0f};
-    if (!spec->boundsMinM && !show->venueGltf.empty()) {
-      auto venue = loadVenue(show->resolve(show->venueGltf));
-      if (!venue) {
-        std::cerr << venue.error().str() << "\n";
-        return 1;
-      }
-      lo = venue->boundsMin;
-      hi = venue->boundsMax;
-    }
-    AtmosphereField atmosphere;
-    std::vector<std::string> warnings;
-    const double clockS = atGiven ? atS : 0.0;
-    const auto field = atmosphere.at(*show, lo, hi, clockS, warnings, hazers);
-    for (const std::string& w : warnings) std::cerr << "haze: warning: " << w << "\n";
-    double sum = 0.0;
-    for (float v : field->values) sum += v;
-    out["atmosphere"] = {{"density_time_s", densityTimeS(*spec, clockS)},
-                         {"grid", {field->nx, field->ny, field->nz}},
-                         {"bounds", {{field->minM.x, field->minM.y, field->minM.z}, {field->maxM.x, field->maxM.y, field->maxM.z}}},
-                         {"mean_density", sum / static_cast<double>(field->values.size())},
-                         {"max_density", field->maxValue()}};
-    nlohmann::ordered_json levels = nlohmann::ordered_json::array();
-    for (size_t h = 0; h < spec->hazers.size(); ++h) {
-      const HazerLevel l = hazers.at(h, densityTimeS(*spec, clockS));
-      levels.push_back({{"output", l.output}, {"fan", l.fan}});
-    }
-    out["atmosphere"]["hazers"] = levels;
+// Cue N of one list, S seconds after its GO (with --follow, its follows firing as on stage).
+Result<PlayedState> cueState(const StateArgs& a, const Show& show, const ProfileSet& profiles) {
+  const CueList* list = show.findCueList(a.listName);
+  if (!list)
+    return Error{a.file, "", a.listName.empty() ? "the show has no cue lists" : "no cue list \"" + a.listName + "\""};
+  auto cue = findCue(*list, a.cueNumber);
+  if (!cue) return Error{a.file, "", cue.error().message};
+  PlayedState out;
+  if (!a.atGiven())
+    out.hazers = hazerSchedule(show, {{list, *cue}}, {});
+  else if (*cue > 0)
+    out.hazers = hazerSchedule(show, {{list, *cue - 1}}, {{list, *cue, 0.0}});
+  else
+    out.hazers = hazerSchedule(show, {}, {{list, *cue, 0.0}});
+  const bool real = a.movement == "real";
+  if (!a.follow) {
+    out.state = real ? movingStateAt(show, profiles, *list, *cue, a.atS) : stateAt(show, profiles, *list, *cue, a.atS);
+    return out;
   }
+  CuePlayer player(show, profiles, *list);
+  if (*cue > 0) player.jumpTo(*cue - 1, 0.0);
+  player.gotoCue(*cue, 0.0);
+  out.state = real ? followCommand(
+                         show, profiles, [&](double t) { return player.state(t); },
+                         [&](double t) { return !player.fading(t) && !player.nextFollowAtS(); }, a.atS)
+                   : player.state(a.atS);
+  return out;
+}
+
+// The density field at that time (docs/shows.md, "Density"), summed up; null without one.
+Result<nlohmann::ordered_json> atmosphereJson(const Show& show, const HazerSchedule& hazers, double clockS) {
+  const auto& spec = show.atmosphere.density;
+  if (!spec) return nlohmann::ordered_json();
+  glm::vec3 lo{0.0f}, hi{0.0f};
+  if (!spec->boundsMinM && !show.venueGltf.empty()) {
+    auto venue = loadVenue(show.resolve(show.venueGltf));
+    if (!venue) return venue.error();
+    lo = venue->boundsMin;
+    hi = venue->boundsMax;
+  }
+  AtmosphereField atmosphere;
+  std::vector<std::string> warnings;
+  const auto field = atmosphere.at(show, lo, hi, clockS, warnings, hazers);
+  for (const std::string& w : warnings) std::cerr << "haze: warning: " << w << "\n";
+  double sum = 0.0;
+  for (float v : field->values) sum += v;
+  nlohmann::ordered_json out = {
+      {"density_time_s", densityTimeS(*spec, clockS)},
+      {"grid", {field->nx, field->ny, field->nz}},
+      {"bounds", {{field->minM.x, field->minM.y, field->minM.z}, {field->maxM.x, field->maxM.y, field->maxM.z}}},
+      {"mean_density", sum / static_cast<double>(field->values.size())},
+      {"max_density", field->maxValue()}};
+  nlohmann::ordered_json levels = nlohmann::ordered_json::array();
+  for (size_t h = 0; h < spec->hazers.size(); ++h) {
+    const HazerLevel l = hazers.at(h, densityTimeS(*spec, clockS));
+    levels.push_back({{"output", l.output}, {"fan", l.fan}});
+  }
+  out["hazers"] = levels;
+  return out;
+}
+
+void print(const nlohmann::ordered_json& out, bool json) {
   if (json) {
     std::cout << out.dump(2) << "\n";
-  } else {
-    for (const auto& [id, a] : out.items()) {
-      std::cout << id;
-      for (const auto& [k, v] : a.items()) std::cout << "  " << k << " " << v.dump();
-      std::cout << "\n";
-    }
+    return;
   }
+  for (const auto& [id, a] : out.items()) {
+    std::cout << id;
+    for (const auto& [k, v] : a.items()) std::cout << "  " << k << " " << v.dump();
+    std::cout << "\n";
+  }
+}
+
+}  // namespace
+
+int runState(const Args& args) {
+  StateArgs a;
+  CommandLine cli("haze state", kUsage);
+  cli.custom("--play", "LIST=CUE[@MASTER][+GO_S]", [&a](const std::string& v) {
+    auto p = parseListPlay(v);
+    if (p) a.plays.push_back(*p);
+    if (!p && a.playError.empty()) a.playError = p.error().message;  // reported below with the reason
+    return true;
+  });
+  cli.text("--cue", a.cueNumber, "a cue number")
+      .number("--at", a.atS, 0.0, 1e9, "a time in seconds (a number, not negative)")
+      .text("--list", a.listName, "a cue list name")
+      .flag("--json", a.json)
+      .flag("--follow", a.follow)
+      .choice("--movement", a.movement, {"real", "instant"})
+      .positional(a.file, "show");
+  if (auto done = cli.parse(args)) return *done;
+  if (!a.playError.empty()) return cli.usage("--play " + a.playError);
+  if (!a.plays.empty() && (!a.cueNumber.empty() || !a.listName.empty()))
+    return cli.usage("--play names its lists and cues itself; expected no --cue or --list with it");
+  if (a.cueNumber.empty() && a.plays.empty()) return cli.usage("expected --cue N (or --play LIST=CUE)");
+
+  auto checked = cli.readShow(a.file);
+  if (!checked) return kExitBadInput;
+  const Show& show = checked->show;
+  Result<PlayedState> played = Error{};
+  if (a.plays.empty()) {
+    played = cueState(a, show, checked->profiles);
+  } else if (auto state = playListsAt(show, checked->profiles, a.plays, a.atS, a.movement == "real")) {
+    played = PlayedState{std::move(*state), hazersOfPlays(show, a.plays, a.atGiven())};
+  } else {
+    played = state.error();
+  }
+  // Errors as the show's checks give them: "file: message", without the command's name.
+  const auto fail = [](const Error& e) {
+    std::cerr << e.str() << "\n";
+    return kExitBadInput;
+  };
+  if (!played) return fail(played.error());
+  // The strobe runs on the playback clock, which starts at GO: --at is also the gate's time.
+  nlohmann::ordered_json out =
+      stageStateJson(show, checked->profiles, played->state, a.atGiven() ? std::optional<double>(a.atS) : std::nullopt);
+  auto atmosphere = atmosphereJson(show, played->hazers, a.atGiven() ? a.atS : 0.0);
+  if (!atmosphere) return fail(atmosphere.error());
+  if (!atmosphere->is_null()) out["atmosphere"] = std::move(*atmosphere);
+  print(out, a.json);
   return 0;
 }
 
