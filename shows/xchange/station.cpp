@@ -103,6 +103,7 @@ Reaction Station::receive(ConnectionId c, const Packet& packet) {
 
 Reaction Station::onMessage(ConnectionId c, const Message& m) {
   Reaction r;
+  r.peer = m.type == MessageType::Leave ? m.fromStationUuid : m.stationUuid;
   switch (m.type) {
     case MessageType::Join:
       notePeer(m);
@@ -126,7 +127,11 @@ Reaction Station::onMessage(ConnectionId c, const Message& m) {
       r.events.push_back("MVR_LEAVE from " + peerName(m.fromStationUuid));
       r.replies.push_back(reply(MessageType::LeaveRet, true));
       return r;
-    case MessageType::Commit: return onCommit(c, m);
+    case MessageType::Commit: {
+      r = onCommit(c, m);
+      r.peer = m.commit.stationUuid;
+      return r;
+    }
     case MessageType::Request: return onRequest(m);
     case MessageType::RequestRet:
       if (pending_.erase(c)) r.events.push_back("MVR_REQUEST refused: " + m.message.substr(0, 200));

@@ -52,6 +52,7 @@ struct Reaction {
   std::vector<std::string> events;     // one line each
   std::optional<ReceivedFile> file;
   bool close = false;
+  std::string peer;  // the station that spoke, when the message names it
 };
 
 // The bytes of an MVR: a zip archive (within the zip limits) holding GeneralSceneDescription.xml.
