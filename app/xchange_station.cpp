@@ -265,11 +265,12 @@ Result<std::unique_ptr<XchangeService>> XchangeService::start(const fs::path& sh
   Result<std::unique_ptr<Node>> node = Node::listen(bindAddress, options.port, s.station, hooks);
   if (!node) return node.error();
   s.node = std::move(*node);
-  say("station \"" + id.name + "\" (" + id.uuid + "), group " + options.group + ", on " + bindAddress + ":" +
-      std::to_string(s.node->port()));
   s.offerShow("the show as haze opened it", false);
   if (Result<std::unique_ptr<Mdns>> m = Mdns::start(id, options.group, s.node->port()); m) s.mdns = std::move(*m);
   else say(m.error().str() + "; stations are reached only by --mvr-xchange-peer HOST:PORT");
+  // Last, once haze is ready; the form of the other listeners' lines ("haze live: OSC on ADDR:PORT"), which tests read.
+  std::fprintf(stderr, "haze live: MVR-xchange on %s:%d (station \"%s\", %s, group %s)\n", bindAddress.c_str(),
+               s.node->port(), id.name.c_str(), id.uuid.c_str(), options.group.c_str());
   s.thread = std::thread([&s] { s.run(); });
   return service;
 }
