@@ -17,6 +17,7 @@ Status checkMvrArchive(const std::vector<std::uint8_t>& bytes, const std::string
 CommitInfo& Station::offer(CommitInfo commit) {
   commit.stationUuid = id_.uuid;
   offered_.push_back(std::move(commit));
+  if (offered_.size() > kMaxOffered) offered_.erase(offered_.begin());
   return offered_.back();
 }
 
@@ -75,14 +76,26 @@ std::string Station::peerName(const std::string& uuid) const {
   return "\"" + p->second.name + "\" (" + uuid + ")";
 }
 
+PeerStation* Station::peer(const std::string& uuid) {
+  if (uuid.empty() || uuid == id_.uuid) return nullptr;
+  auto it = peers_.find(uuid);
+  if (it == peers_.end()) {
+    if (peers_.size() >= kMaxPeers) return nullptr;
+    it = peers_.emplace(uuid, PeerStation{}).first;
+    it->second.uuid = uuid;
+  }
+  return &it->second;
+}
+
 void Station::notePeer(const Message& m) {
-  if (m.stationUuid.empty() || m.stationUuid == id_.uuid) return;
-  PeerStation& p = peers_[m.stationUuid];
-  p.uuid = m.stationUuid;
-  p.name = m.stationName.substr(0, 200);
-  p.provider = m.provider.substr(0, 200);
-  p.commits = m.commits;
-  p.left = false;
+  PeerStation* p = peer(m.stationUuid);
+  if (!p) return;
+  p->name = m.stationName.substr(0, 200);
+  p->provider = m.provider.substr(0, 200);
+  p->commits = m.commits;
+  if (p->commits.size() > kMaxPeerCommits)
+    p->commits.erase(p->commits.begin(), p->commits.end() - static_cast<long>(kMaxPeerCommits));
+  p->left = false;
 }
 
 Reaction Station::broken(ConnectionId c, const std::string& why) {
@@ -153,11 +166,10 @@ Reaction Station::onCommit(ConnectionId c, const Message& m) {
   Reaction r;
   const CommitInfo& k = m.commit;
   const std::string from = k.stationUuid;
-  if (!from.empty() && from != id_.uuid) {
-    PeerStation& p = peers_[from];
-    p.uuid = from;
-    p.left = false;
-    p.commits.push_back(k);
+  if (PeerStation* p = peer(from)) {
+    p->left = false;
+    p->commits.push_back(k);
+    if (p->commits.size() > kMaxPeerCommits) p->commits.erase(p->commits.begin());
   }
   r.events.push_back("MVR_COMMIT from " + peerName(from) + ": file " + k.fileUuid + ", " + std::to_string(k.fileSize) +
                      " bytes" + (k.comment.empty() ? "" : ", \"" + k.comment.substr(0, 200) + "\""));

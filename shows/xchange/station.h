@@ -61,6 +61,11 @@ Status checkMvrArchive(const std::vector<std::uint8_t>& bytes, const std::string
 
 class Station {
  public:
+  // What is kept, so a station that floods haze with joins and commits costs bounded memory.
+  static constexpr std::size_t kMaxOffered = 8;       // haze's own files, the latest
+  static constexpr std::size_t kMaxPeers = 256;       // stations listed; later ones are not
+  static constexpr std::size_t kMaxPeerCommits = 16;  // per station, the latest
+
   Station(Identity identity, Limits limits = {}) : id_(std::move(identity)), limits_(limits) {}
 
   const Identity& identity() const { return id_; }
@@ -68,7 +73,8 @@ class Station {
   // With true, a COMMIT from another station is answered by a REQUEST for its file.
   void setRequestCommits(bool on) { requestCommits_ = on; }
 
-  // A file haze offers from now on (the latest is the last); stationUuid is set to haze's.
+  // A file haze offers from now on (the latest is the last, at most kMaxOffered: the oldest is
+  // dropped); stationUuid is set to haze's.
   CommitInfo& offer(CommitInfo commit);
   const std::vector<CommitInfo>& offered() const { return offered_; }
 
@@ -94,6 +100,7 @@ class Station {
   Reaction onCommit(ConnectionId c, const Message& m);
   Reaction onRequest(const Message& m);
   void notePeer(const Message& m);
+  PeerStation* peer(const std::string& uuid);  // listed, or listed now; nullptr when full
   std::string peerName(const std::string& uuid) const;
 
   Identity id_;

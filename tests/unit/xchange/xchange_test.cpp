@@ -3,6 +3,7 @@
 // the station's answers.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -379,6 +380,43 @@ TEST(XchangeStation, CommitsOverTheLimitOrForOthersAreNotRequested) {
   big.fileSize = 10;
   EXPECT_FALSE(quiet.receive(1, jsonPacket(peer.commit(big))).request);
   EXPECT_EQ(quiet.peers().at(kPeer).commits.size(), 1u);
+}
+
+TEST(XchangeStation, WhatItKeepsIsBounded) {
+  Station haze({"haze", kHaze});
+  for (int k = 0; k < 20; ++k) {
+    CommitInfo c;
+    c.fileUuid = "a7669ff9-bd61-4486-aea6-c190f8ba6b" + std::to_string(10 + k);
+    haze.offer(c);
+  }
+  ASSERT_EQ(haze.offered().size(), Station::kMaxOffered);
+  EXPECT_EQ(haze.offered().back().fileUuid, "a7669ff9-bd61-4486-aea6-c190f8ba6b29");
+  // A flood of stations and of one station's commits.
+  for (int k = 0; k < 300; ++k) {
+    char uuid[40];
+    std::snprintf(uuid, sizeof uuid, "4aa291a1-1a62-45fe-aabc-%012d", k);
+    Station other({"s", uuid});
+    (void)haze.receive(1, jsonPacket(other.join()));
+  }
+  EXPECT_EQ(haze.peers().size(), Station::kMaxPeers);
+  Station peer({"peer", kPeer});
+  for (int k = 0; k < 40; ++k) {
+    CommitInfo c;
+    c.fileUuid = kFile;
+    c.fileSize = static_cast<std::uint64_t>(k + 1);
+    (void)haze.receive(1, jsonPacket(peer.commit(c)));
+  }
+  // kPeer did not fit among the 256 first stations: its commits were answered, not listed.
+  EXPECT_EQ(haze.peers().count(kPeer), 0u);
+  Station fresh({"haze", kHaze});
+  for (int k = 0; k < 40; ++k) {
+    CommitInfo c;
+    c.fileUuid = kFile;
+    c.fileSize = static_cast<std::uint64_t>(k + 1);
+    (void)fresh.receive(1, jsonPacket(peer.commit(c)));
+  }
+  ASSERT_EQ(fresh.peers().at(kPeer).commits.size(), Station::kMaxPeerCommits);
+  EXPECT_EQ(fresh.peers().at(kPeer).commits.back().fileSize, 40u);
 }
 
 TEST(XchangeStation, BrokenJsonClosesTheConnection) {
