@@ -42,7 +42,16 @@ double nowS() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-void say(const std::string& line) { std::fprintf(stderr, "haze live: MVR-xchange: %s\n", line.c_str()); }
+// The lines also go to the GUI's window: the last 50 are kept.
+std::mutex gLinesMutex;
+std::deque<std::string> gLines;
+
+void say(const std::string& line) {
+  std::fprintf(stderr, "haze live: MVR-xchange: %s\n", line.c_str());
+  std::lock_guard<std::mutex> lock(gLinesMutex);
+  gLines.push_back(line);
+  if (gLines.size() > 50) gLines.pop_front();
+}
 
 // The station's uuid stays the same across start-ups (the specification asks for it): kept in
 // $XDG_CONFIG_HOME/haze/mvr-xchange-station (or ~/.config/haze/...). A new one when unreadable.
@@ -115,12 +124,19 @@ struct XchangeService::Impl {
   double stampChangedAt = 0.0;
   std::atomic<bool> stop{false};
   std::thread thread;
+  // Between the station's thread and the GUI: what it sees, what the GUI asks for.
+  mutable std::mutex mutex;
+  std::vector<XchangeService::StationSeen> seen;
+  bool commitAsked = false;
+  std::vector<std::string> requestsAsked;
 
   explicit Impl(Identity id) : station(std::move(id)) {}
   Result<CommitInfo> exportShow(const std::string& comment);
   void offerShow(const std::string& comment, bool announce);
   void importFile(ReceivedFile&& f);
   void watchShow(double now);
+  void serveAsks();
+  void publishSeen();
   void run();
 };
 
@@ -203,11 +219,50 @@ void XchangeService::Impl::importFile(ReceivedFile&& f) {
   say("imported file " + f.commit.fileUuid + " as " + target.string() + " (" + std::to_string(in->fixtureCount) + " fixtures)");
 }
 
+void XchangeService::Impl::serveAsks() {
+  bool commit = false;
+  std::vector<std::string> asked;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    std::swap(commit, commitAsked);
+    asked.swap(requestsAsked);
+  }
+  if (commit) offerShow("committed from haze's window", true);
+  for (const std::string& uuid : asked) {
+    const ConnectionId c = node->connectionOf(uuid);
+    if (c == 0) {
+      say("station " + uuid + " is not connected; nothing requested");
+      continue;
+    }
+    node->send(c, station.request(c, "", uuid));
+    say("MVR_REQUEST for the latest file of " + uuid);
+  }
+}
+
+void XchangeService::Impl::publishSeen() {
+  std::vector<XchangeService::StationSeen> now;
+  for (const auto& [uuid, p] : station.peers()) {
+    XchangeService::StationSeen s;
+    s.name = p.name;
+    s.uuid = uuid;
+    s.provider = p.provider;
+    s.files = p.commits.size();
+    if (!p.commits.empty()) s.latestFile = p.commits.back().fileUuid;
+    s.connected = node->connectionOf(uuid) != 0;
+    s.left = p.left;
+    now.push_back(std::move(s));
+  }
+  std::lock_guard<std::mutex> lock(mutex);
+  seen.swap(now);
+}
+
 void XchangeService::Impl::run() {
   double nextDial = 0.0;
   stamp = stampOf(showFile);
   while (!stop) {
     node->pump(100);
+    serveAsks();
+    publishSeen();
     const double now = nowS();
     if (mdns) {
       for (const std::string& n : mdns->takeNotes()) say(n);
@@ -242,7 +297,7 @@ Result<std::unique_ptr<XchangeService>> XchangeService::start(const fs::path& sh
   Impl& s = *service->impl_;
   s.showFile = showFile;
   s.options = options;
-  s.station.setRequestCommits(!options.acceptDir.empty());
+  s.station.setRequestCommits(!options.acceptDir.empty() && options.requestCommits);
   if (!options.acceptDir.empty()) {
     s.acceptDir = options.acceptDir;
     std::error_code ec;
@@ -273,6 +328,28 @@ Result<std::unique_ptr<XchangeService>> XchangeService::start(const fs::path& sh
                s.node->port(), id.name.c_str(), id.uuid.c_str(), options.group.c_str());
   s.thread = std::thread([&s] { s.run(); });
   return service;
+}
+
+std::vector<XchangeService::StationSeen> XchangeService::stations() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->seen;
+}
+
+int XchangeService::port() const { return impl_->node->port(); }
+
+void XchangeService::commitNow() {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  impl_->commitAsked = true;
+}
+
+void XchangeService::request(const std::string& stationUuid) {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  if (impl_->requestsAsked.size() < 64) impl_->requestsAsked.push_back(stationUuid);
+}
+
+std::vector<std::string> XchangeService::recentLines() const {
+  std::lock_guard<std::mutex> lock(gLinesMutex);
+  return std::vector<std::string>(gLines.begin(), gLines.end());
 }
 
 XchangeService::~XchangeService() {

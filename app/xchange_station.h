@@ -21,6 +21,7 @@ struct XchangeOptions {
   std::vector<std::string> peers;    // HOST:PORT, dialled directly
   std::string acceptDir;             // "" = commits are listed, not fetched
   std::string stationName;           // "" = "haze on HOSTNAME"
+  bool requestCommits = true;        // with acceptDir: fetch every commit (false: only request())
 };
 
 // The options' declarations, for `haze live`'s command line.
@@ -37,6 +38,23 @@ class XchangeService {
   ~XchangeService();
   XchangeService(const XchangeService&) = delete;
   XchangeService& operator=(const XchangeService&) = delete;
+
+  // For the GUI's MVR-xchange window; safe from any thread (the station's thread answers).
+  struct StationSeen {
+    std::string name, uuid, provider;
+    std::size_t files = 0;    // commits it announced
+    std::string latestFile;   // the last one's uuid
+    bool connected = false;   // a connection to it is open
+    bool left = false;
+  };
+  std::vector<StationSeen> stations() const;
+  int port() const;
+  // Exports the show file as it is on disk and commits it to the stations now.
+  void commitNow();
+  // Asks a station for its latest file (imported into the accept folder when it comes).
+  void request(const std::string& stationUuid);
+  // The last lines the station logged (at most 50), oldest first.
+  std::vector<std::string> recentLines() const;
 
   struct Impl;
 

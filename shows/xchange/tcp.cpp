@@ -117,6 +117,12 @@ int Node::sendToJoined(const Message& m) {
   return n;
 }
 
+ConnectionId Node::connectionOf(const std::string& uuid) const {
+  for (const auto& [id, c] : conns_)
+    if (!uuid.empty() && c->peer == uuid && c->fd >= 0 && !c->connecting) return id;
+  return 0;
+}
+
 bool Node::dialled(const Endpoint& to) const {
   for (const auto& [id, c] : conns_)
     if (c->dialled && c->endpoint.host == to.host && c->endpoint.port == to.port) return true;

@@ -53,6 +53,8 @@ class Node {
   int port() const { return port_; }
   // Starts a connection to `to` and queues `first` (a JOIN) on it; the dial finishes in pump().
   Result<ConnectionId> dial(const Endpoint& to, const Message& first);
+  // An open connection on which the station `uuid` spoke; 0 when there is none.
+  ConnectionId connectionOf(const std::string& uuid) const;
   // Whether a connection to `to` that haze dialled is open (or still connecting).
   bool dialled(const Endpoint& to) const;
   void send(ConnectionId c, const Message& m);
