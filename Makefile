@@ -48,7 +48,7 @@ test-fast: build
 # CI proves the libraries and the headless program build without them. Under the sanitizers it
 # runs the unit suites (one per pure library, no GL) and the headless program on the demo.
 UNIT_SUITES := unit_core unit_atmosphere unit_fixtures unit_gdtf unit_scene unit_reference unit_shows unit_dmx unit_edit unit_import \
-               unit_frame unit_mesh unit_output unit_fuzz_replay
+               unit_frame unit_mesh unit_output unit_xchange unit_fuzz_replay
 
 $(ASAN_BUILD)/build.ninja:
 	cmake -S . -B $(ASAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHAZE_SANITIZE=ON -DHAZE_BUILD_GUI=OFF

@@ -27,6 +27,7 @@
 #include "shows/dmx/midi_input.h"
 #include "shows/dmx/midi_timecode.h"
 #include "shows/dmx/osc_command.h"
+#include "app/xchange_station.h"
 #include "shows/dmx/udp_receiver.h"
 #include "shows/movement.h"
 #include "fixtures/core/atomic_file.h"
@@ -45,6 +46,8 @@ constexpr const char* kUsage =
     "                 [--exposure EV] [--exposure-mode auto|manual]\n"
     "                 [--osc PORT] [--timecode] [--mtc [--mtc-from CLIENT:PORT]] [--cue-list NAME]\n"
     "                 [--record-cue N [--label L]] [--no-sync]\n"
+    "                 [--mvr-xchange [--group NAME] [--mvr-xchange-port N] [--mvr-xchange-peer HOST:PORT]...\n"
+    "                  [--accept-commits DIR] [--station-name NAME]]\n"
     "Listens for Art-Net (UDP 6454) and sACN E1.31 (UDP 5568); neither flag means both.\n"
     "--bind: the local IPv4 address to listen on (default 127.0.0.1: this machine only).\n"
     "sACN universe N is haze universe N; Art-Net Port-Address P (Net:Sub-Net:Universe) is\n"
@@ -59,7 +62,11 @@ constexpr const char* kUsage =
     "or --mtc-from connects to a sender). They play --cue-list (default: the first list); fixtures on a\n"
     "universe with DMX follow the console. --record-cue N: on exit, the commanded stage (where the\n"
     "heads are going, not where they are) is recorded into cue N (tracking: only what differs) and\n"
-    "the show saved safely.\n";
+    "the show saved safely.\n"
+    "--mvr-xchange: haze is an MVR-xchange station of --group (default \"Default\"): announced over mDNS when\n"
+    "avahi-daemon runs, on --bind:--mvr-xchange-port (0: a free port); --mvr-xchange-peer dials a station\n"
+    "directly. Stations get the show as MVR; saving the show file sends them a commit; --accept-commits DIR\n"
+    "imports what they commit into new shows in DIR (docs/mvr.md, \"MVR-xchange\").\n";
 
 // Per universe: the fixtures DMX drives, each it cannot (one line, with why), and those whose
 // intensity no channel sets (at full: docs/live.md, "What the console drives").
@@ -195,6 +202,8 @@ int runLive(const Args& args) {
       .text("--label", recordLabel, "a cue label")
       .flag("--no-sync", noSync)
       .positional(showPath, "show");
+  XchangeOptions xchange;
+  addXchangeOptions(cli, xchange);
   if (auto done = cli.parse(args)) return *done;
   if (noPreview) options.input.acceptPreview = false;
   if (noSync) options.input.synchronise = false;
@@ -291,6 +300,12 @@ int runLive(const Args& args) {
     if (!o) return fail(o.error().str());
     osc = std::move(*o);
     std::fprintf(stderr, "haze live: OSC on %s:%d\n", options.udp.bindAddress.c_str(), osc->port());
+  }
+  std::unique_ptr<XchangeService> xchangeService;  // stopped (MVR_LEAVE sent) when live ends
+  if (xchange.enabled) {
+    auto x = XchangeService::start(showPath, options.udp.bindAddress, xchange);
+    if (!x) return fail(x.error().str());
+    xchangeService = std::move(*x);
   }
   for (const std::string& note : receiver.udp().notes()) {
     std::fprintf(stderr, "haze live: %s\n", note.c_str());

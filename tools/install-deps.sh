@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libassimp-dev liblo-dev liblo-tools ola iproute2 libasound2-dev alsa-utils
   libopenexr-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libcairo2-dev
   librsvg2-dev  # SVG gobos (fixtures/gobo_image.cpp)
+  libavahi-client-dev avahi-daemon  # MVR-xchange announced over mDNS (shows/xchange/mdns.cpp)
   xvfb xdotool x11-utils imagemagick ffmpeg poppler-utils libxml2-utils
   qlcplus-data
   chromium  # tests/cli/sheet_html.sh loads the HTML review sheet in it (headless, file:// only)

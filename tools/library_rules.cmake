@@ -2,7 +2,7 @@
 # GLFW or ImGui, however indirectly, and only the GUI reaches GLFW and ImGui. A link added
 # against the rule fails the configure step with the path that breaks it.
 set(HAZE_PURE_LIBRARIES haze_core haze_mesh haze_atmosphere haze_fixtures haze_scene haze_reference haze_shows haze_dmx haze_edit haze_frame
-    haze_import haze_output)
+    haze_import haze_output haze_xchange)
 set(HAZE_GL_ONLY PkgConfig::EGL PkgConfig::OPENGL haze_gl haze_renderer haze_shaders haze_app)
 set(HAZE_GUI_ONLY glfw PkgConfig::IMGUI haze_gui)
 
@@ -60,7 +60,7 @@ set(HAZE_LAYERS
   "haze_fixtures"
   "haze_scene haze_shows"
   "haze_dmx haze_edit haze_import haze_reference haze_output haze_shaders"
-  "haze_frame haze_gl"
+  "haze_frame haze_xchange haze_gl"
   "haze_renderer"
   "haze_app"
   "haze_gui")

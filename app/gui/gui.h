@@ -37,6 +37,7 @@
 #include "shows/edit/show_document.h"
 #include "shows/movement.h"
 #include "app/render_job.h"
+#include "app/xchange_station.h"
 #include "shows/scene/frame_state.h"
 
 struct GLFWwindow;
@@ -123,6 +124,12 @@ struct Gui {
   std::vector<std::string> importWarnings;
   std::string importedFrom;
   bool showImportWarnings = false;
+  // File > MVR-xchange (gui_xchange.cpp): the station while it runs, for the show open then.
+  bool showXchange = false;
+  std::unique_ptr<XchangeService> xchange;
+  std::string xchangeShow;  // the show file it serves
+  char xchangeGroup[64] = "Default";
+  char xchangeBind[64] = "127.0.0.1";  // as `haze live --bind`: this machine only until changed
   std::string openTab;  // a tab of the show panel to bring to the front once ("Patch"...)
 
   // The console command line (gui_command.cpp): the field, the lines run (oldest first), which
@@ -229,6 +236,7 @@ void setExposureMode(Gui& gui, ExposureMode mode);
 void drawInspector(Gui& gui);
 void drawHelp(Gui& gui);
 void drawImportWarnings(Gui& gui);
+void drawXchangeWindow(Gui& gui);
 void drawCommandLine(Gui& gui);
 void drawFileDialogs(Gui& gui);
 void handleViewport(Gui& gui);  // mouse in the viewport, then the overlay

@@ -330,6 +330,7 @@ void drawPanels(Gui& gui, int winW, int winH) {
   drawInspector(gui);
   drawHelp(gui);
   drawImportWarnings(gui);
+  drawXchangeWindow(gui);
   drawFileDialogs(gui);
   handleViewport(gui);
   keepViewSettings(gui);

@@ -136,6 +136,7 @@ void drawMenuBar(Gui& gui) {
     }
     if (ImGui::MenuItem("Import MVR...", "Ctrl+I")) requestFileAction(gui, FileAction::ImportMvr);
     if (ImGui::MenuItem("Export MVR...", "Ctrl+E")) requestFileAction(gui, FileAction::ExportMvr);
+    if (ImGui::MenuItem("MVR-xchange...", nullptr, gui.showXchange)) gui.showXchange = !gui.showXchange;
     ImGui::Separator();
     if (ImGui::MenuItem("Save", "Ctrl+S")) saveCurrent(gui);
     if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) requestFileAction(gui, FileAction::SaveAs);

@@ -33,6 +33,7 @@ namespace haze {
 namespace {
 
 constexpr const char* kSceneXml = "GeneralSceneDescription.xml";
+constexpr const char* kUnnamedGroup = "\x01unnamed ";  // no MVR name starts with a control character
 constexpr int kMaxDepth = 32;  // nesting of groups and symbols; bounds a symbol that names itself
 // Placements of geometry in all: symbols of symbols multiply, so a small hostile file could ask
 // for 10^30 of them; real rigs have a few thousand.
@@ -40,6 +41,7 @@ constexpr std::size_t kMaxGeometryInstances = 200000;
 
 struct FixtureSource {
   std::string spec, mode, name, fixtureId, address, focus, place, uuid;
+  std::vector<std::string> groups;  // the GroupObjects around it, outermost first (haze groups)
   glm::dmat4 worldMm{1.0};
   int extraAddresses = 0;
 };
@@ -110,6 +112,7 @@ class SceneWalker {
   }
 
   std::vector<FixtureSource> fixtures;
+  std::vector<std::string> groupNames;  // every GroupObject's name, in the order of the file
   std::vector<MvrGeometryInstance> geometry;
   std::map<std::string, glm::dvec3> focusPointsMm;  // uuid (lower case) -> world position
 
@@ -130,7 +133,15 @@ class SceneWalker {
       const std::string kind = obj.name();
       const glm::dmat4 world = parent * localMatrix(obj);
       if (kind == "GroupObject") {
+        // A group becomes a haze group of the fixtures inside it (an export writes each show
+        // group as one); equal names share one group; unnamed ones get a key of their own here
+        // and a number once it is known which hold fixtures (addGroups).
+        std::string name = obj.attribute("name").value();
+        if (name.empty()) name = std::string(kUnnamedGroup) + std::to_string(groupNames.size());
+        if (std::find(groupNames.begin(), groupNames.end(), name) == groupNames.end()) groupNames.push_back(name);
+        groupStack_.push_back(name);
         walkChildren(obj.child("ChildList"), world, depth + 1);
+        groupStack_.pop_back();
       } else if (kind == "Fixture") {
         addFixture(obj, world);
         walkChildren(obj.child("ChildList"), world, depth + 1);
@@ -193,6 +204,7 @@ class SceneWalker {
 
   void addFixture(const pugi::xml_node& obj, const glm::dmat4& world) {
     FixtureSource f;
+    f.groups = groupStack_;
     f.place = place(obj);
     f.worldMm = world;
     f.name = obj.attribute("name").value();
@@ -226,6 +238,7 @@ class SceneWalker {
   std::vector<std::size_t> newlines_;  // offsets of '\n' in the XML, for line numbers
   std::vector<std::string>& warnings_;
   std::set<std::string> warned_;
+  std::vector<std::string> groupStack_;  // the GroupObjects the walk is inside
   std::map<std::string, pugi::xml_node> symdefs_;
 };
 
@@ -298,7 +311,23 @@ class MvrImporter {
       if (g.ok) addFixture(f, g);
     }
     out_.fixtureCount = static_cast<int>(out_.show.fixtures.size());
+    addGroups();
     return Ok{};
+  }
+
+  // The GroupObjects as haze groups, in the file's order, with the fixtures that imported (a
+  // group left empty by fixtures that did not is left out); unnamed ones become "MVR group N".
+  void addGroups() {
+    int unnamed = 0;
+    for (const std::string& name : walker_.groupNames) {
+      GroupDef g;
+      g.name = name;
+      for (const auto& [id, groups] : fixtureGroups_)
+        if (std::find(groups.begin(), groups.end(), name) != groups.end()) g.fixtures.push_back(id);
+      if (g.fixtures.empty()) continue;
+      if (name.rfind(kUnnamedGroup, 0) == 0) g.name = "MVR group " + std::to_string(++unnamed);
+      out_.show.groups.push_back(std::move(g));
+    }
   }
 
   // Focus: one cue that aims each fixture at its focus point (pan/tilt within the profile's
@@ -525,6 +554,7 @@ class MvrImporter {
     const glm::vec3 posM = mvrPointToHazeM(glm::dvec3(w[3])) + glm::vec3(rHaze * glm::dvec3(g.pivotOffsetM));
     def.position = glm::vec3(std::round(posM.x * 1e4f) / 1e4f, std::round(posM.y * 1e4f) / 1e4f, std::round(posM.z * 1e4f) / 1e4f);
     if (!f.focus.empty()) focusOf_.emplace_back(out_.show.fixtures.size(), f.focus);
+    if (!f.groups.empty()) fixtureGroups_.emplace_back(def.id, f.groups);
     out_.show.fixtures.push_back(def);
     beamDirs_.push_back(glm::vec3(rHaze * glm::dvec3(0.0, -1.0, 0.0)));
   }
@@ -562,6 +592,7 @@ class MvrImporter {
   std::set<int> takenIds_, usedIds_;
   int nextId_ = 1;
   std::vector<std::pair<std::size_t, std::string>> focusOf_;  // fixture index -> focus uuid
+  std::vector<std::pair<int, std::vector<std::string>>> fixtureGroups_;  // fixture id -> its GroupObjects
   std::vector<glm::vec3> beamDirs_;                           // by fixture: the beam at pan = tilt = 0, haze world
   std::vector<glm::vec3> venueTrianglesM_;
 };

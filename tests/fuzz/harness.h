@@ -37,6 +37,7 @@ bool acceptMidiTimecode(const uint8_t* data, size_t size);
 bool acceptMesh(const uint8_t* data, size_t size);  // .3ds / .glb / .gltf by the first bytes
 bool acceptQxf(const uint8_t* data, size_t size);   // a QLC+ fixture definition
 bool acceptSvgGobo(const uint8_t* data, size_t size);  // an SVG gobo image, rasterised
+bool acceptXchange(const uint8_t* data, size_t size);  // an MVR-xchange TCP stream, decoded and answered
 
 }  // namespace haze::fuzz
 

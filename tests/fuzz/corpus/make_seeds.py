@@ -344,3 +344,34 @@ put('svg_gobo', 'bad-truncated.svg', svg_disc[:len(svg_disc) // 2])
 put('svg_gobo', 'bad-not-xml.svg', 'GIF89a not an svg\n')
 put('svg_gobo', 'bad-zero-size.svg', svg_head + ' width="0" height="80"/>\n')
 put('svg_gobo', 'bad-sliver.svg', svg_head + ' width="100000" height="1"/>\n')
+
+# ---- MVR-xchange TCP stream (shows/xchange, docs/mvr.md "MVR-xchange") ----
+# The 28-byte header: magic 778682, version 1, packet number, packet count, type (0 JSON, 1 MVR
+# file), uint64 payload length, all big-endian; then the payload. A stream holds several packets.
+def xpacket(payload, kind=0, number=0, count=1, magic=778682, version=1, length=None):
+    if isinstance(payload, (dict, list)):
+        payload = json.dumps(payload)
+    if isinstance(payload, str):
+        payload = payload.encode('utf-8')
+    n = len(payload) if length is None else length
+    return struct.pack('>IIIIIQ', magic, version, number, count, kind, n) + payload
+station = '4aa291a1-1a62-45fe-aabc-e90e5e2399a8'
+mvr_file = 'a7669ff9-bd61-4486-aea6-c190f8ba6b8c'
+x_join = {'Type': 'MVR_JOIN', 'Provider': 'Seed', 'StationName': 'Seed station', 'StationUUID': station,
+          'verMajor': '1', 'verMinor': '6', 'Files': [{'FileUUID': mvr_file, 'FileSize': 64, 'verMajor': 1, 'verMinor': 6}]}
+x_commit = {'Type': 'MVR_COMMIT', 'verMajor': 1, 'verMinor': 6, 'FileSize': 64, 'FileUUID': mvr_file,
+            'StationUUID': station, 'ForStationsUUID': [], 'Comment': 'seed'}
+x_mvr = zipped([('GeneralSceneDescription.xml', '<?xml version="1.0"?><GeneralSceneDescription verMajor="1" verMinor="6"/>')])
+put('xchange', 'ok-join.bin', xpacket(x_join))
+put('xchange', 'ok-commit-request-leave.bin', xpacket(x_commit) + xpacket({'Type': 'MVR_REQUEST', 'FileUUID': '', 'FromStationUUID': ''})
+    + xpacket({'Type': 'MVR_LEAVE', 'FromStationUUID': station}))
+put('xchange', 'ok-split-json.bin', xpacket('{"Type":"MVR_COMMIT_RET",', 0, 0, 2) + xpacket('"OK":"true","Message":""}', 0, 1, 2))
+put('xchange', 'ok-file.bin', xpacket(x_mvr, 1))
+put('xchange', 'bad-magic.bin', xpacket(x_join, magic=778683))
+put('xchange', 'bad-version.bin', xpacket(x_join, version=2))
+put('xchange', 'bad-type.bin', xpacket(x_join, kind=2))
+put('xchange', 'bad-json-over-limit.bin', xpacket('{}', length=(1 << 20) + 1))
+put('xchange', 'bad-truncated.bin', xpacket(x_join)[:-5])
+put('xchange', 'bad-json-array.bin', xpacket(['MVR_JOIN']))
+put('xchange', 'bad-join-missing-uuid.bin', xpacket({k: v for k, v in x_join.items() if k != 'StationUUID'}))
+put('xchange', 'bad-file-not-zip.bin', xpacket(b'PK\x03\x04 not really a zip archive', 1))

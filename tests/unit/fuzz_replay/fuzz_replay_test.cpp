@@ -143,6 +143,7 @@ TEST(FuzzReplay, Mesh) { replay("mesh", fuzz::acceptMesh, 500, 15); }
 TEST(FuzzReplay, Qxf) { replay("qxf", fuzz::acceptQxf, 3000, 16); }
 // Fewer: each accepted input is a 512-pixel raster (a few ms).
 TEST(FuzzReplay, SvgGobo) { replay("svg_gobo", fuzz::acceptSvgGobo, 600, 17); }
+TEST(FuzzReplay, Xchange) { replay("xchange", fuzz::acceptXchange, 3000, 18); }
 
 }  // namespace
 }  // namespace haze

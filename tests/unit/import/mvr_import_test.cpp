@@ -460,6 +460,25 @@ TEST(MvrBroken, MissingGdtfIsWarnedAndTheRestImports) {
   for (const Error& e : validateShowFile(b.dir / "out.haze.json")) ADD_FAILURE() << e.str();
 }
 
+// GroupObjects become haze groups: nested ones give a fixture to each group around it, unnamed
+// ones that hold fixtures are numbered from 1, and fixtures whose GDTF does not import are left out of them.
+TEST(MvrGroups, GroupObjectsBecomeGroups) {
+  const std::string xml = sceneXml(
+      "<GroupObject name=\"Truss\" uuid=\"g1\"><ChildList>\n" + fixtureXml("A", "par.gdtf", "1", "{1,0,0}{0,1,0}{0,0,1}{0,0,6000}", "1") +
+      "<GroupObject name=\"Left\" uuid=\"g2\"><ChildList>\n" + fixtureXml("B", "par.gdtf", "20", "{1,0,0}{0,1,0}{0,0,1}{0,0,6000}", "2") +
+      fixtureXml("C", "Missing@Fixture.gdtf", "40", "{1,0,0}{0,1,0}{0,0,1}{0,0,6000}", "3") +
+      "</ChildList></GroupObject>\n</ChildList></GroupObject>\n" +
+      "<GroupObject uuid=\"g3\"><ChildList>\n" + fixtureXml("D", "par.gdtf", "60", "{1,0,0}{0,1,0}{0,0,1}{0,0,6000}", "4") +
+      "</ChildList></GroupObject>\n<GroupObject name=\"Empty\" uuid=\"g4\"><ChildList>\n" +
+      fixtureXml("E", "Missing@Fixture.gdtf", "80", "{1,0,0}{0,1,0}{0,0,1}{0,0,6000}", "5") + "</ChildList></GroupObject>\n" +
+      fixtureXml("F", "par.gdtf", "100", "{1,0,0}{0,1,0}{0,0,1}{0,0,6000}", "6"));
+  Built b(true, {{"GeneralSceneDescription.xml", xml}, {"par.gdtf", gdtfBytes()}});
+  ASSERT_TRUE(b.result.ok()) << b.result.error().str();
+  const std::vector<GroupDef> expected = {GroupDef{"Truss", {1, 2}}, GroupDef{"Left", {2}}, GroupDef{"MVR group 1", {4}}};
+  EXPECT_EQ(b.result->show.groups, expected);
+  for (const Error& e : validateShowFile(b.dir / "out.haze.json")) ADD_FAILURE() << e.str();
+}
+
 // A GDTF whose beam does not point along its own -Z at rest (the LED PAR's Beam turned 90
 // degrees about GDTF Y, to -X): the GDTF import's warning is passed on with the GDTF's name, and
 // the fixture is placed by its -Z: with the Matrix's w = MVR -Y, the beam at rest points along
