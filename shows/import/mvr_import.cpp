@@ -373,14 +373,22 @@ class MvrImporter {
     std::vector<glm::vec3> rigPointsM;
     std::vector<bool> focused(out_.show.fixtures.size(), false);
     for (const FixtureDef& def : out_.show.fixtures) rigPointsM.push_back(def.position);
-    for (const auto& [index, uuid] : focusOf_) {
-      if (auto fp = walker_.focusPointsMm.find(uuid); fp != walker_.focusPointsMm.end()) {
-        rigPointsM.push_back(mvrPointToHazeM(fp->second));
-        focused[index] = true;
-      }
-    }
     const Venue rayVenue = venueFromTriangles(std::move(venueTrianglesM_));
     const Bvh venue(rayVenue);
+    for (const auto& [index, uuid] : focusOf_) {
+      if (auto fp = walker_.focusPointsMm.find(uuid); fp != walker_.focusPointsMm.end()) {
+        const glm::vec3 focusM = mvrPointToHazeM(fp->second);
+        rigPointsM.push_back(focusM);
+        focused[index] = true;
+        // A focus point is often in the air (Vectorworks puts them at head height); the pool
+        // of light is where the beam through it lands, so that belongs in the picture too.
+        const glm::vec3 along = focusM - out_.show.fixtures[index].position;
+        if (glm::length(along) < 1e-3f) continue;
+        const glm::vec3 dir = glm::normalize(along);
+        const float hit = firstHitM(venue, focusM, dir, 30.0f);
+        if (hit > 0.0f) rigPointsM.push_back(focusM + hit * dir);
+      }
+    }
     for (std::size_t i = 0; i < out_.show.fixtures.size(); ++i) {
       if (focused[i]) continue;
       const float hit = firstHitM(venue, out_.show.fixtures[i].position, beamDirs_[i], 30.0f);
