@@ -32,6 +32,7 @@
 
 #include "shows/frame/atmosphere_field.h"
 #include "app/gui/desktop_dialog.h"
+#include "shows/edit/fixture_rows.h"
 #include "shows/edit/gui_settings.h"
 #include "shows/edit/label_layout.h"
 #include "shows/edit/show_document.h"

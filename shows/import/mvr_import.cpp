@@ -23,6 +23,7 @@
 #include "fixtures/gdtf.h"
 #include "fixtures/gdtf_dmx.h"
 #include "fixtures/core/zip_archive.h"
+#include "fixtures/core/text_file.h"
 #include "shows/import/mvr_camera.h"
 #include "shows/import/mvr_venue.h"
 #include "shows/focus.h"
@@ -39,7 +40,7 @@ constexpr int kMaxDepth = 32;  // nesting of groups and symbols; bounds a symbol
 constexpr std::size_t kMaxGeometryInstances = 200000;
 
 struct FixtureSource {
-  std::string spec, mode, name, fixtureId, address, focus, place, uuid;
+  std::string spec, mode, name, fixtureId, unitNumber, address, focus, place, uuid;
   glm::dmat4 worldMm{1.0};
   int extraAddresses = 0;
 };
@@ -200,6 +201,7 @@ class SceneWalker {
     f.spec = obj.child("GDTFSpec").text().as_string();
     f.mode = obj.child("GDTFMode").text().as_string();
     f.fixtureId = obj.child("FixtureID").text().as_string();
+    f.unitNumber = obj.child("UnitNumber").text().as_string();
     f.focus = lower(obj.child("Focus").text().as_string());
     pugi::xml_node first;
     for (pugi::xml_node a : obj.child("Addresses").children("Address")) {
@@ -297,6 +299,8 @@ class MvrImporter {
         if (Status s = importGdtf(f, g); !s.ok()) return s;
       if (g.ok) addFixture(f, g);
     }
+    const std::vector<std::string> names = mvrFixtureNames(labels_);
+    for (std::size_t i = 0; i < names.size(); ++i) out_.show.fixtures[i].name = names[i];
     out_.fixtureCount = static_cast<int>(out_.show.fixtures.size());
     return Ok{};
   }
@@ -533,6 +537,7 @@ class MvrImporter {
     const glm::vec3 posM = mvrPointToHazeM(glm::dvec3(w[3])) + glm::vec3(rHaze * glm::dvec3(g.pivotOffsetM));
     def.position = glm::vec3(std::round(posM.x * 1e4f) / 1e4f, std::round(posM.y * 1e4f) / 1e4f, std::round(posM.z * 1e4f) / 1e4f);
     if (!f.focus.empty()) focusOf_.emplace_back(out_.show.fixtures.size(), f.focus);
+    labels_.push_back(MvrFixtureLabel{trim(f.name), trim(f.fixtureId), trim(f.unitNumber), g.profileKey, def.id});
     out_.show.fixtures.push_back(def);
     beamDirs_.push_back(glm::vec3(rHaze * glm::dvec3(0.0, -1.0, 0.0)));
   }
@@ -570,6 +575,7 @@ class MvrImporter {
   std::set<int> takenIds_, usedIds_;
   int nextId_ = 1;
   std::vector<std::pair<std::size_t, std::string>> focusOf_;  // fixture index -> focus uuid
+  std::vector<MvrFixtureLabel> labels_;                       // per fixture, for its name
   std::vector<glm::vec3> beamDirs_;                           // by fixture: the beam at pan = tilt = 0, haze world
   std::vector<glm::vec3> venueTrianglesM_;
 };
