@@ -47,6 +47,9 @@ struct MvrFixtureLabel {
 // the type) with the FixtureID, else with "unit" and the UnitNumber (0 is none), else with the
 // haze id; a name that still repeats gets " #" and the haze id.
 std::vector<std::string> mvrFixtureNames(const std::vector<MvrFixtureLabel>& labels);
+// Whether `name` is one mvrFixtureNames makes from these fields (any of its forms), so that an
+// export leaves the MVR's own name in place instead of writing the composed one back.
+bool isMvrComposedName(const std::string& name, const MvrFixtureLabel& label);
 
 struct MvrImportOptions {
   bool writeVenue = true;          // build SHOW_venue.gltf from the scene's geometry

@@ -46,4 +46,16 @@ std::vector<std::string> mvrFixtureNames(const std::vector<MvrFixtureLabel>& lab
   return names;
 }
 
+bool isMvrComposedName(const std::string& name, const MvrFixtureLabel& label) {
+  const std::string base = label.name.empty() ? typeName(label.type) : label.name;
+  std::vector<std::string> forms = {base + " " + std::to_string(label.id)};
+  if (!label.name.empty()) forms.push_back(label.name);
+  if (!label.fixtureId.empty()) forms.push_back(base + " " + label.fixtureId);
+  if (isUnit(label.unitNumber)) forms.push_back(base + " unit " + label.unitNumber);
+  const std::string suffix = " #" + std::to_string(label.id);
+  for (const std::string& f : forms)
+    if (name == f || name == f + suffix) return true;
+  return false;
+}
+
 }  // namespace haze

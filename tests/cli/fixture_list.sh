@@ -90,6 +90,11 @@ PY
 )
   check "the imported Capture rig: by id, distinct names with the FixtureID, patches from the MVR: $out" \
     "$([ "${out%% *}" = ok ]; echo $?)"
+  # The composed names are the MVR's own: an export over the source writes its names back as they were.
+  "$haze" export-mvr "$tmp/cap.haze.json" -o "$tmp/cap.mvr" >/dev/null 2>&1
+  names() { python3 -c 'import sys, zipfile, xml.etree.ElementTree as E
+print(sorted(f.get("name") for f in E.fromstring(zipfile.ZipFile(sys.argv[1]).read("GeneralSceneDescription.xml")).iter("Fixture")))' "$1"; }
+  check "export-mvr writes the MVR's own fixture names back" "$([ "$(names "$mvr")" = "$(names "$tmp/cap.mvr")" ]; echo $?)"
 fi
 
 echo "$passed passed, $fail failed"

@@ -47,5 +47,17 @@ TEST(MvrNames, ARepeatedFixtureIdStillGivesDistinctNames) {
   EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), names.size());
 }
 
+TEST(MvrNames, AComposedNameIsRecognisedAsTheMvrsOwn) {
+  const MvrFixtureLabel capture{.name = "Alpha Spot", .fixtureId = "11", .unitNumber = "1", .type = "Clay Paky@Alpha Spot@r3", .id = 11};
+  EXPECT_TRUE(isMvrComposedName("Alpha Spot 11", capture));
+  EXPECT_TRUE(isMvrComposedName("Alpha Spot 11 #11", capture));
+  EXPECT_TRUE(isMvrComposedName("Alpha Spot", capture));
+  EXPECT_FALSE(isMvrComposedName("Alpha Spot 12", capture));
+  EXPECT_FALSE(isMvrComposedName("FOH 1", capture));  // renamed in haze: the export writes it
+  const MvrFixtureLabel unnamed{.name = "", .fixtureId = "", .unitNumber = "0", .type = "Robe@Robin 600E Spot@2024", .id = 7};
+  EXPECT_TRUE(isMvrComposedName("Robin 600E Spot 7", unnamed));
+  EXPECT_FALSE(isMvrComposedName("Robin 600E Spot unit 0", unnamed));
+}
+
 }  // namespace
 }  // namespace haze
