@@ -1,6 +1,7 @@
 // `haze fixture info FILE [--mode M] [--json]`: the facts of any profile file (native JSON, IES,
 // LDT, GDTF, QLC+ .qxf) on stdout; `haze fixture search TEXT` looks in the fixture library
-// (fixtures/fixture_library.h); `haze fixture change-type` gives fixtures of a show another type
+// (fixtures/fixture_library.h); `haze fixture list SHOW` lists a show's fixtures by id;
+// `haze fixture change-type` gives fixtures of a show another type
 // (app/cmd_change_type.cpp). A bad file or bad arguments give one line on stderr and exit status 1.
 #include <chrono>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include "fixtures/facts.h"
 #include "fixtures/fixture_library.h"
 #include "fixtures/profile.h"
+#include "shows/edit/fixture_rows.h"
 
 namespace haze {
 
@@ -21,7 +23,10 @@ constexpr const char* kSearchUsage =
     "usage: haze fixture search TEXT [--library DIR]... [--limit N] [--json] [--stats]\n"
     "  looks in the installed QLC+ definitions, the folders of HAZE_FIXTURE_PATH (':' between them)\n"
     "  and each --library DIR (.qxf and .gdtf); case, spaces and hyphens are ignored";
-constexpr const char* kSubcommands = "expected the subcommand \"info\", \"search\" or \"change-type\"";
+constexpr const char* kListUsage =
+    "usage: haze fixture list SHOW [--json]\n"
+    "  every fixture of the show by id: name, type, mode, universe.address (\"-\": unpatched)";
+constexpr const char* kSubcommands = "expected the subcommand \"info\", \"search\", \"list\" or \"change-type\"";
 
 void printText(const nlohmann::ordered_json& f) {
   auto num = [&](const char* k) { return f[k].get<double>(); };
@@ -149,9 +154,57 @@ int runSearch(const Args& args) {
   return 0;
 }
 
+// A show's fixtures as a table (or JSON), sorted by id: what a designer checks a rig by.
+int runList(const Args& args) {
+  std::string file;
+  bool json = false;
+  CommandLine cli("haze fixture list", std::string(kListUsage) + "\n");
+  cli.flag("--json", json).positional(file, "show");
+  if (auto done = cli.parse(args)) return *done;
+  auto checked = cli.readShow(file);
+  if (!checked) return kExitBadInput;
+  const std::vector<FixtureRow> rows = fixtureRows(checked->show, checked->profiles);
+  auto patchOf = [](const FixtureRow& r) {
+    return r.patch ? std::to_string(r.patch->universe) + "." + std::to_string(r.patch->address) : std::string("-");
+  };
+  if (json) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const FixtureRow& r : rows) {
+      nlohmann::ordered_json j;
+      j["id"] = r.id;
+      j["name"] = r.name;
+      j["type"] = r.type;
+      j["mode"] = r.mode;
+      j["universe"] = r.patch ? nlohmann::ordered_json(r.patch->universe) : nlohmann::ordered_json(nullptr);
+      j["address"] = r.patch ? nlohmann::ordered_json(r.patch->address) : nlohmann::ordered_json(nullptr);
+      j["channels"] = r.channels ? nlohmann::ordered_json(*r.channels) : nlohmann::ordered_json(nullptr);
+      out.push_back(j);
+    }
+    std::cout << out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+    return 0;
+  }
+  // Columns as wide as their longest entry, so the list reads down.
+  std::size_t wId = 2, wName = 4, wType = 4, wMode = 4;
+  for (const FixtureRow& r : rows) {
+    wId = std::max(wId, std::to_string(r.id).size());
+    wName = std::max(wName, r.name.size());
+    wType = std::max(wType, r.type.size());
+    wMode = std::max(wMode, r.mode.size());
+  }
+  auto line = [&](const std::string& id, const std::string& name, const std::string& type, const std::string& mode,
+                  const std::string& patch) {
+    std::cout << std::string(wId - id.size(), ' ') << id << "  " << name << std::string(wName - name.size(), ' ') << "  " << type
+              << std::string(wType - type.size(), ' ') << "  " << mode << std::string(wMode - mode.size(), ' ') << "  " << patch << "\n";
+  };
+  line("id", "name", "type", "mode", "univ.addr");
+  for (const FixtureRow& r : rows) line(std::to_string(r.id), r.name, r.type, r.mode, patchOf(r));
+  return 0;
+}
+
 }  // namespace
 
 int runFixture(const Args& args) {
+  if (!args.empty() && args[0] == "list") return runList(Args(args.begin() + 1, args.end()));
   if (!args.empty() && args[0] == "search") return runSearch(Args(args.begin() + 1, args.end()));
   if (!args.empty() && args[0] == "change-type") return runChangeType(Args(args.begin() + 1, args.end()));
   if (args.empty() || args[0] != "info") {

@@ -29,6 +29,7 @@ constexpr const char* kHelp =
     "  haze export-mvr SHOW -o RIG.mvr [--force] [--focus-list NAME] [--focus-cue N]   the rig as MVR\n"
     "  haze fixture info FILE [--mode M] --json   native profile, .ies, .ldt, .gdtf or QLC+ .qxf\n"
     "  haze fixture search TEXT [--library DIR]... [--json]   the fixture library (QLC+, your folders)\n"
+    "  haze fixture list SHOW [--json]      the show's fixtures by id: name, type, mode, universe.address\n"
     "  haze fixture change-type SHOW --fixtures 11-20 --type TEXT [--mode M] [-o OUT]\n"
     "  haze live SHOW [--artnet] [--sacn] [--bind ADDR] [--artnet-port P] [--sacn-port P] [--multicast]\n"
     "                 [--duration S] [--on-loss hold|blackout] [--state-json OUT] [--render OUT.png]\n"

@@ -32,6 +32,7 @@
 
 #include "shows/frame/atmosphere_field.h"
 #include "app/gui/desktop_dialog.h"
+#include "shows/edit/fixture_rows.h"
 #include "shows/edit/gui_settings.h"
 #include "shows/edit/label_layout.h"
 #include "shows/edit/show_document.h"
@@ -149,6 +150,12 @@ struct Gui {
   std::vector<int> fixtureRows, patchRows;
   std::vector<PlacedLabel> placedLabels;
   Rect filterField;
+  // Where the Library tab drew its search field, first hit and "Change type" button (window
+  // pixels; zero size when not drawn), and how many hits it lists: for the probe.
+  struct LibraryProbe {
+    Rect search, firstHit, change;
+    int hits = 0;
+  } libraryProbe;
   // The show panel's tabs as the last frame laid them out: a tab drawn narrower than its label
   // needs is truncated ("Fixtu...") (tests/gui/panel_tabs.sh).
   struct TabShown {

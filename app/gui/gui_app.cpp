@@ -294,6 +294,14 @@ void publishProbe(const Gui& gui) {
   char filter[160];
   const Rect& r = gui.filterField;
   std::snprintf(filter, sizeof filter, "{\"x\":%.1f,\"y\":%.1f,\"w\":%.1f,\"h\":%.1f}", r.x, r.y, r.w, r.h);
+  const Gui::LibraryProbe& lp = gui.libraryProbe;
+  auto rectJson = [](const Rect& q) {
+    char one[128];
+    std::snprintf(one, sizeof one, "{\"x\":%.1f,\"y\":%.1f,\"w\":%.1f,\"h\":%.1f}", q.x, q.y, q.w, q.h);
+    return std::string(one);
+  };
+  const std::string library = "{\"search\":" + rectJson(lp.search) + ",\"first_hit\":" + rectJson(lp.firstHit) +
+                              ",\"change\":" + rectJson(lp.change) + ",\"hits\":" + std::to_string(lp.hits) + "}";
   // The status line, as a JSON string (tests/gui/view_settings.sh reads a warning on it).
   std::string status;
   for (const char c : gui.status) {
@@ -302,7 +310,7 @@ void publishProbe(const Gui& gui) {
   }
   const std::string text = "{\"numbers\":" + std::string(gui.showNumbers ? "true" : "false") +
                            ",\"fixture_rows\":" + ids(gui.fixtureRows) + ",\"patch_rows\":" + ids(gui.patchRows) +
-                           ",\"filter_field\":" + filter + ",\"labels\":[" + labels + "]" + exposure +
+                           ",\"filter_field\":" + filter + ",\"library\":" + library + ",\"labels\":[" + labels + "]" + exposure +
                            ",\"intensity\":{" + stage + "},\"tabs\":[" + tabs + "]," + panel +
                            ",\"status\":\"" + status + "\",\"status_error\":" + (gui.statusError ? "true" : "false") + "}\n";
   const std::string tmp = std::string(path) + ".tmp";

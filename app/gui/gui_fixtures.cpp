@@ -1,5 +1,5 @@
-// The fixture list: every fixture of the show by id, with its name, universe.address and
-// whether the programmer holds it, narrowed by the filter field; click selects, Ctrl toggles,
+// The fixture list: every fixture of the show by id, with its name, universe.address, type
+// (shows/edit/fixture_rows.h) and whether the programmer holds it, narrowed by the filter field; click selects, Ctrl toggles,
 // Shift adds (the same rule as clicks in the viewport, shows/edit/picking.h).
 #include <cstdio>
 
@@ -37,11 +37,12 @@ void drawFixturesTab(Gui& gui) {
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit |
                                 ImGuiTableFlags_BordersOuter;
   gui.fixtureRows.clear();
-  if (!ImGui::BeginTable("fixturelist", 3, flags, ImVec2(0, 0))) return;
+  if (!ImGui::BeginTable("fixturelist", 4, flags, ImVec2(0, 0))) return;
   ImGui::TableSetupScrollFreeze(0, 1);
   ImGui::TableSetupColumn("Id");
   ImGui::TableSetupColumn("Name", ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableSetupColumn("U.Addr");
+  ImGui::TableSetupColumn("Type");
   ImGui::TableHeadersRow();
   const ImGuiIO& io = ImGui::GetIO();
   // Ids only: a click may change the selection while the rows are drawn, never the fixtures.
@@ -62,6 +63,8 @@ void drawFixturesTab(Gui& gui) {
     ImGui::Text("%s%s", f.name.c_str(), programmed ? "  (P)" : "");
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(patchText(f).c_str());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(fixtureTypeText(f, doc.profiles()).c_str());
   }
   ImGui::EndTable();
 }

@@ -2,10 +2,14 @@
 // modes), adding a profile file from disk (native .json, .ies, .ldt, .gdtf, .qxf), placing the
 // picked profile by clicking a surface in the viewport (P), and searching the installed fixture
 // library to change the selected fixtures' type (docs/fixtures.md, "Changing a fixture's type").
+#include <cmath>
 #include <cstdio>
 #include <optional>
 
+#include <glm/trigonometric.hpp>
+
 #include "app/gui/gui.h"
+#include "fixtures/facts.h"
 #include "fixtures/fixture_library.h"
 
 namespace haze {
@@ -20,14 +24,55 @@ struct LibrarySearch {
   std::vector<const LibraryEntry*> hits;
   int picked = -1;
   int mode = 0;
+  std::string factsFor;  // the file `facts` were read from: a hit's profile loads once per pick
+  PickFacts facts;
 };
+
+// The beam's shape as a cone seen from the side: the intensity over the peak at each angle off
+// the axis is the distance from the lens (the apex, top middle) drawn in that direction.
+void drawBeamShape(const std::vector<float>& shape) {
+  const float size = 48.0f;
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImVec2 apex(at.x + size, at.y + 4.0f);
+  std::vector<ImVec2> outline;
+  for (int g = -90; g <= 90; ++g) {
+    const float r = size * shape[static_cast<size_t>(std::abs(g))];
+    const float a = glm::radians(static_cast<float>(g));
+    outline.emplace_back(apex.x + r * std::sin(a), apex.y + r * std::cos(a));
+  }
+  draw->AddLine(apex, ImVec2(apex.x, apex.y + size), IM_COL32(90, 90, 90, 255));
+  for (size_t k = 1; k < outline.size(); ++k) draw->AddTriangleFilled(apex, outline[k - 1], outline[k], IM_COL32(255, 225, 150, 110));
+  draw->AddPolyline(outline.data(), static_cast<int>(outline.size()), IM_COL32(255, 225, 150, 255), 0, 1.5f);
+  ImGui::Dummy(ImVec2(2.0f * size, size + 8.0f));
+}
+
+// The picked hit's facts (fixtures/facts.h pickFacts), read from its file the first time it is
+// picked.
+void readPickedFacts(LibrarySearch& s, const LibraryEntry& e) {
+  if (s.factsFor != e.file) {
+    auto profile = loadProfile(e.file);
+    s.facts = pickFacts(e, profile.ok() ? profile->get() : nullptr);
+    if (!profile.ok()) s.facts.lines.push_back("does not load: " + profile.error().message);
+    s.factsFor = e.file;
+  }
+}
+
+void drawPickedFacts(const LibrarySearch& s) {
+  for (const std::string& line : s.facts.lines) ImGui::BulletText("%s", line.c_str());
+}
 
 void drawChangeType(Gui& gui, LibrarySearch& s) {
   ShowDocument& doc = *gui.doc;
   ImGui::Separator();
   ImGui::TextUnformatted("Library: change type");
   ImGui::SetNextItemWidth(-1);
+  gui.libraryProbe = {};
   ImGui::InputTextWithHint("##librarysearch", "search: robin 600, alphaspot...", s.text, sizeof s.text);
+  {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    gui.libraryProbe.search = {a.x, a.y, b.x - a.x, b.y - a.y};
+  }
   if (s.shownFor != s.text) {
     if (!s.index) s.index = indexLibrary(libraryFolders({}), defaultLibraryCache());
     s.hits = s.text[0] ? searchLibrary(*s.index, s.text) : std::vector<const LibraryEntry*>{};
@@ -36,7 +81,9 @@ void drawChangeType(Gui& gui, LibrarySearch& s) {
     s.picked = -1;
     s.mode = 0;
   }
-  ImGui::BeginChild("library hits", ImVec2(0, ImGui::GetContentRegionAvail().y * 0.5f), true);
+  // Five rows at most: the picked hit's facts need the room below.
+  const float hitsH = std::min(ImGui::GetContentRegionAvail().y * 0.35f, 5.5f * ImGui::GetTextLineHeightWithSpacing());
+  ImGui::BeginChild("library hits", ImVec2(0, hitsH), true);
   for (size_t k = 0; k < s.hits.size(); ++k) {
     const LibraryEntry& e = *s.hits[k];
     const std::string row = e.title() + "  (" + e.type + ")##" + e.file;
@@ -44,11 +91,20 @@ void drawChangeType(Gui& gui, LibrarySearch& s) {
       s.picked = static_cast<int>(k);
       s.mode = 0;
     }
+    if (k == 0) {
+      const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+      gui.libraryProbe.firstHit = {a.x, a.y, b.x - a.x, b.y - a.y};
+    }
   }
   ImGui::EndChild();
+  gui.libraryProbe.hits = static_cast<int>(s.hits.size());
   if (s.picked < 0 || static_cast<size_t>(s.picked) >= s.hits.size()) return;
   const LibraryEntry& e = *s.hits[static_cast<size_t>(s.picked)];
-  if (e.modes.empty()) return;
+  readPickedFacts(s, e);
+  if (e.modes.empty()) {
+    drawPickedFacts(s);
+    return;
+  }
   s.mode = std::clamp(s.mode, 0, static_cast<int>(e.modes.size()) - 1);
   const std::string current = e.modes[static_cast<size_t>(s.mode)].name + " (" + std::to_string(e.modes[static_cast<size_t>(s.mode)].channels) + " ch)";
   if (ImGui::BeginCombo("mode", current.c_str())) {
@@ -60,7 +116,12 @@ void drawChangeType(Gui& gui, LibrarySearch& s) {
   }
   if (doc.selection.empty()) ImGui::BeginDisabled();
   const std::string button = "Change type of " + std::to_string(doc.selection.size()) + " selected";
-  if (ImGui::Button(button.c_str())) {
+  const bool change = ImGui::Button(button.c_str());
+  {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    gui.libraryProbe.change = {a.x, a.y, b.x - a.x, b.y - a.y};
+  }
+  if (change) {
     auto report = doc.changeFixtureType(doc.selection, e.file, e.modes[static_cast<size_t>(s.mode)].name);
     if (!report)
       gui.say(report.error().str(), true);
@@ -70,6 +131,12 @@ void drawChangeType(Gui& gui, LibrarySearch& s) {
               (report->lines.empty() ? "" : " (" + report->lines.front() + (report->lines.size() > 1 ? "; ..." : "") + ")"));
   }
   if (doc.selection.empty()) ImGui::EndDisabled();
+  // The beam's shape beside the button, the facts below: both fit the panel without scrolling.
+  if (!s.facts.beamShape.empty()) {
+    ImGui::SameLine(0.0f, 24.0f);
+    drawBeamShape(s.facts.beamShape);
+  }
+  drawPickedFacts(s);
 }
 
 }  // namespace
@@ -86,7 +153,8 @@ void drawLibraryTab(Gui& gui) {
   }
   if (!canPlace) ImGui::EndDisabled();
 
-  ImGui::BeginChild("profiles", ImVec2(0, ImGui::GetContentRegionAvail().y * 0.55f), true);
+  // A third of the panel: the library search and the picked hit's facts below need the rest.
+  ImGui::BeginChild("profiles", ImVec2(0, ImGui::GetContentRegionAvail().y * 0.3f), true);
   for (const auto& [key, profile] : doc.profiles()) {
     if (!profile) continue;
     const std::string row = key + "  (" + profile->name + ")";

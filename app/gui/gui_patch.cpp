@@ -1,5 +1,5 @@
 // The patch table: every fixture by id (narrowed by the filter field the Fixtures tab shares),
-// its universe.address as a desk writes it, then universe, address, mode and footprint to edit;
+// its name (its type on hover), its universe.address as a desk writes it, then universe, address, mode and footprint to edit;
 // overlapping or out-of-range footprints are shown in red (patchConflicts, show_document.h). Universe 0
 // unpatches. Typed numbers apply on Enter through patchFixture, which refuses a patch that would
 // overlap (the status line says why).
@@ -20,9 +20,10 @@ void drawPatchTab(Gui& gui) {
   std::vector<FixtureDef> fixtures;
   for (const FixtureDef* f : drawFixtureFilter(gui)) fixtures.push_back(*f);
   gui.patchRows.clear();
-  if (!ImGui::BeginTable("patch", 6, flags, ImVec2(0, 0))) return;
+  if (!ImGui::BeginTable("patch", 7, flags, ImVec2(0, 0))) return;
   ImGui::TableSetupScrollFreeze(0, 1);
   ImGui::TableSetupColumn("Fixture");
+  ImGui::TableSetupColumn("Name");
   ImGui::TableSetupColumn("U.Addr");
   ImGui::TableSetupColumn("Univ");
   ImGui::TableSetupColumn("Addr");
@@ -36,7 +37,9 @@ void drawPatchTab(Gui& gui) {
     if (conflicts.count(f.id)) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(140, 30, 30, 255));
     ImGui::TableNextColumn();
     ImGui::Text("%d", f.id);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f.name.c_str());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(f.name.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", fixtureTypeText(f, doc.profiles()).c_str());
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(patchText(f).c_str());
     int universe = f.patch ? f.patch->universe : 0, address = f.patch ? f.patch->address : 0;

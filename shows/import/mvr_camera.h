@@ -20,13 +20,14 @@ namespace haze {
 float firstHitM(const Bvh& venue, const glm::vec3& origin, const glm::vec3& dir,
                 float maxM = std::numeric_limits<float>::max());
 
-// A camera named "MVR overview" looking at the middle of rigPointsM (fixtures and where they
-// are aimed, haze metres). Candidates: from the audience side (+Z) at 18.4, 12, 6 and 0
-// degrees up, straight or 30 degrees aside, each 1.26 rig diagonals back (the view of an open
-// stage) or 0.3 m short of the first geometry on the way. The winner sees the most rig points
-// (a clear line to within 0.5 m of each), with a little weight on distance; ties go to the
-// earlier candidate. Nearer than the full distance, the field of view widens (at most 75
-// degrees) to keep the rig in frame. rigPointsM must not be empty.
+// A camera named "MVR overview" that holds every point of rigPointsM (fixtures and where they
+// are aimed, haze metres) in a 16:9 picture. Candidates: from the audience side (+Z) at 18.4,
+// 12, 6, 0, then 30 and 45 degrees up, straight or 30 or 60 degrees aside, each 1.26 rig
+// diagonals back (the view of an open stage) or 0.3 m short of the first geometry on the way.
+// From each, the line of sight is turned to the middle of the points and the field of view
+// fitted to them (30 to 75 degrees). A candidate whose frame holds them all beats any other;
+// then the one that sees the most rig points (a clear line to within 0.5 m of each) wins, with
+// a little weight on distance; ties go to the earlier. rigPointsM must not be empty.
 CameraDef mvrOverviewCamera(const std::vector<glm::vec3>& rigPointsM, const Bvh& venue);
 
 }  // namespace haze

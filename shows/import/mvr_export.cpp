@@ -15,6 +15,7 @@
 #include <pugixml.hpp>
 
 #include "fixtures/core/atomic_file.h"
+#include "fixtures/core/text_file.h"
 #include "fixtures/core/zip_archive.h"
 #include "fixtures/core/zip_writer.h"
 #include "fixtures/gdtf.h"
@@ -472,7 +473,11 @@ class Exporter {
       ++out_.fixturesChanged;
     }
     const std::string sourceName = x.attribute("name").value();
-    if (sourceName != f.name && !(sourceName.empty() && f.name == f.profile)) setAttribute(x, "name", f.name);
+    // A name the import composed (the MVR's name with its FixtureID, ...) is the MVR's own name.
+    const MvrFixtureLabel label{sourceName, trim(x.child("FixtureID").text().as_string()), trim(x.child("UnitNumber").text().as_string()),
+                                f.profile, f.id};
+    if (sourceName != f.name && !isMvrComposedName(f.name, label) && !(sourceName.empty() && f.name == f.profile))
+      setAttribute(x, "name", f.name);
     if (p.gdtf) {
       std::string spec = lower(x.child("GDTFSpec").text().as_string());
       if (spec.size() < 5 || spec.substr(spec.size() - 5) != ".gdtf") spec += ".gdtf";

@@ -23,6 +23,7 @@
 #include "fixtures/gdtf.h"
 #include "fixtures/gdtf_dmx.h"
 #include "fixtures/core/zip_archive.h"
+#include "fixtures/core/text_file.h"
 #include "shows/import/mvr_camera.h"
 #include "shows/import/mvr_venue.h"
 #include "shows/focus.h"
@@ -40,7 +41,7 @@ constexpr int kMaxDepth = 32;  // nesting of groups and symbols; bounds a symbol
 constexpr std::size_t kMaxGeometryInstances = 200000;
 
 struct FixtureSource {
-  std::string spec, mode, name, fixtureId, address, focus, place, uuid;
+  std::string spec, mode, name, fixtureId, unitNumber, address, focus, place, uuid;
   std::vector<std::string> groups;  // the GroupObjects around it, outermost first (haze groups)
   glm::dmat4 worldMm{1.0};
   int extraAddresses = 0;
@@ -212,6 +213,7 @@ class SceneWalker {
     f.spec = obj.child("GDTFSpec").text().as_string();
     f.mode = obj.child("GDTFMode").text().as_string();
     f.fixtureId = obj.child("FixtureID").text().as_string();
+    f.unitNumber = obj.child("UnitNumber").text().as_string();
     f.focus = lower(obj.child("Focus").text().as_string());
     pugi::xml_node first;
     for (pugi::xml_node a : obj.child("Addresses").children("Address")) {
@@ -310,6 +312,8 @@ class MvrImporter {
         if (Status s = importGdtf(f, g); !s.ok()) return s;
       if (g.ok) addFixture(f, g);
     }
+    const std::vector<std::string> names = mvrFixtureNames(labels_);
+    for (std::size_t i = 0; i < names.size(); ++i) out_.show.fixtures[i].name = names[i];
     out_.fixtureCount = static_cast<int>(out_.show.fixtures.size());
     addGroups();
     return Ok{};
@@ -402,14 +406,22 @@ class MvrImporter {
     std::vector<glm::vec3> rigPointsM;
     std::vector<bool> focused(out_.show.fixtures.size(), false);
     for (const FixtureDef& def : out_.show.fixtures) rigPointsM.push_back(def.position);
-    for (const auto& [index, uuid] : focusOf_) {
-      if (auto fp = walker_.focusPointsMm.find(uuid); fp != walker_.focusPointsMm.end()) {
-        rigPointsM.push_back(mvrPointToHazeM(fp->second));
-        focused[index] = true;
-      }
-    }
     const Venue rayVenue = venueFromTriangles(std::move(venueTrianglesM_));
     const Bvh venue(rayVenue);
+    for (const auto& [index, uuid] : focusOf_) {
+      if (auto fp = walker_.focusPointsMm.find(uuid); fp != walker_.focusPointsMm.end()) {
+        const glm::vec3 focusM = mvrPointToHazeM(fp->second);
+        rigPointsM.push_back(focusM);
+        focused[index] = true;
+        // A focus point is often in the air (Vectorworks puts them at head height); the pool
+        // of light is where the beam through it lands, so that belongs in the picture too.
+        const glm::vec3 along = focusM - out_.show.fixtures[index].position;
+        if (glm::length(along) < 1e-3f) continue;
+        const glm::vec3 dir = glm::normalize(along);
+        const float hit = firstHitM(venue, focusM, dir, 30.0f);
+        if (hit > 0.0f) rigPointsM.push_back(focusM + hit * dir);
+      }
+    }
     for (std::size_t i = 0; i < out_.show.fixtures.size(); ++i) {
       if (focused[i]) continue;
       const float hit = firstHitM(venue, out_.show.fixtures[i].position, beamDirs_[i], 30.0f);
@@ -555,6 +567,7 @@ class MvrImporter {
     def.position = glm::vec3(std::round(posM.x * 1e4f) / 1e4f, std::round(posM.y * 1e4f) / 1e4f, std::round(posM.z * 1e4f) / 1e4f);
     if (!f.focus.empty()) focusOf_.emplace_back(out_.show.fixtures.size(), f.focus);
     if (!f.groups.empty()) fixtureGroups_.emplace_back(def.id, f.groups);
+    labels_.push_back(MvrFixtureLabel{trim(f.name), trim(f.fixtureId), trim(f.unitNumber), g.profileKey, def.id});
     out_.show.fixtures.push_back(def);
     beamDirs_.push_back(glm::vec3(rHaze * glm::dvec3(0.0, -1.0, 0.0)));
   }
@@ -593,6 +606,7 @@ class MvrImporter {
   int nextId_ = 1;
   std::vector<std::pair<std::size_t, std::string>> focusOf_;  // fixture index -> focus uuid
   std::vector<std::pair<int, std::vector<std::string>>> fixtureGroups_;  // fixture id -> its GroupObjects
+  std::vector<MvrFixtureLabel> labels_;                       // per fixture, for its name
   std::vector<glm::vec3> beamDirs_;                           // by fixture: the beam at pan = tilt = 0, haze world
   std::vector<glm::vec3> venueTrianglesM_;
 };

@@ -37,6 +37,20 @@ Result<Patch> parseMvrAddress(const std::string& text);
 // hundred channels becomes one line instead of a hundred.
 std::vector<std::string> groupMvrWarnings(const std::vector<std::string>& warnings);
 
+// What tells an imported fixture apart: the MVR's name attribute, <FixtureID>, <UnitNumber>,
+// the profile it got (a GDTF's maker@type@revision) and its haze id.
+struct MvrFixtureLabel {
+  std::string name, fixtureId, unitNumber, type;
+  int id = 0;
+};
+// One name per label, in order: the MVR name where no other fixture has it; else that name (or
+// the type) with the FixtureID, else with "unit" and the UnitNumber (0 is none), else with the
+// haze id; a name that still repeats gets " #" and the haze id.
+std::vector<std::string> mvrFixtureNames(const std::vector<MvrFixtureLabel>& labels);
+// Whether `name` is one mvrFixtureNames makes from these fields (any of its forms), so that an
+// export leaves the MVR's own name in place instead of writing the composed one back.
+bool isMvrComposedName(const std::string& name, const MvrFixtureLabel& label);
+
 struct MvrImportOptions {
   bool writeVenue = true;          // build SHOW_venue.gltf from the scene's geometry
   std::size_t maxVenueTriangles = 4'000'000;  // geometry beyond this is left out (warned)

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "shows/import/mvr_camera.h"
+#include "unit/import/frame_place.h"
 
 namespace haze {
 namespace {
@@ -67,7 +68,36 @@ TEST(MvrCamera, OpenStageKeepsTheFullDistance) {
   EXPECT_EQ(cam.name, "MVR overview");
   EXPECT_LT(glm::length(cam.target - glm::vec3(0, 6, 0)), 1e-4f);
   EXPECT_LT(glm::length(cam.position - glm::vec3(0, 10, 12)), 0.011f);
-  EXPECT_FLOAT_EQ(cam.fovYDeg, 40.0f);
+  // The rig spans +-5 m across at 12.65 m: tan 0.395, at 16:9 a vertical tan of 0.222 (25
+  // degrees with 8 % to spare), below the 30 degrees an open stage keeps at least.
+  EXPECT_FLOAT_EQ(cam.fovYDeg, 30.0f);
+}
+
+TEST(MvrCamera, RigFillingAClosedRoomIsFramedWhole) {
+  // A 30 x 9 x 18 m room whose left half is hung with a grid of pendants at 8 m, their pools on
+  // the floor: no view from the audience wall straight on holds it, the camera must turn and
+  // widen, and still stand inside the room.
+  const glm::vec3 lo(-15, 0, -8), hi(15, 9, 10.5f);
+  std::vector<glm::vec3> rig;
+  for (float x = -14.0f; x <= 0.0f; x += 2.0f) {
+    for (float z = -7.0f; z <= 10.0f; z += 2.5f) {
+      rig.push_back({x, 8.0f, z});
+      rig.push_back({x, 0.01f, z});
+    }
+  }
+  const RayScene room(box(lo, hi));
+  const CameraDef cam = mvrOverviewCamera(rig, room.bvh);
+  for (int k = 0; k < 3; ++k) {  // 0.3 m short of the wall along a slanted ray: 0.1 m at least
+    EXPECT_GT(cam.position[k], lo[k] + 0.1f) << k;
+    EXPECT_LT(cam.position[k], hi[k] - 0.1f) << k;
+  }
+  EXPECT_GT(cam.position.z, 0.0f);  // the audience half
+  EXPECT_LE(cam.fovYDeg, 75.0f);
+  for (const glm::vec3& p : rig) {
+    const glm::vec2 at = framePlace(cam, p);
+    EXPECT_LE(std::abs(at.x), 1.0f) << p.x << " " << p.y << " " << p.z;
+    EXPECT_LE(std::abs(at.y), 1.0f) << p.x << " " << p.y << " " << p.z;
+  }
 }
 
 TEST(MvrCamera, ClosedRoomPutsTheCameraInside) {

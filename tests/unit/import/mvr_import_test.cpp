@@ -4,6 +4,7 @@
 // the importer's code.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -21,6 +22,7 @@
 #include "shows/show_validate.h"
 #include "test_data.h"
 #include "unit/gdtf/zip_builder.h"
+#include "unit/import/frame_place.h"
 
 namespace haze {
 namespace {
@@ -127,7 +129,12 @@ void checkAgainstXml(const std::string& mvr, std::size_t expectedFixtures) {
     const XmlFixture& x = fromXml[i];
     const FixtureDef& f = show.fixtures[i];
     SCOPED_TRACE(mvr + " fixture " + std::to_string(i) + " \"" + x.name + "\"");
-    EXPECT_EQ(f.name, x.name);
+    // A name no other fixture has is kept. The bigger rigs name every fixture by its type: the
+    // name gets the FixtureID (Capture), else the haze id (Vectorworks leaves FixtureID empty
+    // and writes UnitNumber 0).
+    const auto sameName = std::count_if(fromXml.begin(), fromXml.end(), [&](const XmlFixture& o) { return o.name == x.name; });
+    if (sameName == 1) EXPECT_EQ(f.name, x.name);
+    else EXPECT_EQ(f.name, x.name + " " + (x.fixtureId.empty() ? std::to_string(f.id) : x.fixtureId));
     // Patch: absolute 1-based addresses, 0 = unpatched.
     const long abs = std::strtol(x.address.c_str(), nullptr, 10);
     if (abs == 0) {
@@ -195,12 +202,16 @@ TEST(MvrImport, BasicFixture) {
   bool floorWarned = false;
   for (const auto& w : imp.result->warnings) floorWarned |= w.find("places no geometry; the venue is a floor") != std::string::npos;
   EXPECT_TRUE(floorWarned);
-  // The overview camera looks at the middle between the fixture and where its beam (straight
-  // down, identity Matrix) meets that floor: (5, 2.5, -5) plus the pivot's drop.
+  // The overview camera holds the fixture and where its beam (straight down, identity Matrix)
+  // meets that floor, (5, 0, -5), in its picture, looking from the audience side (+Z).
   ASSERT_EQ(imp.result->show.cameras.size(), 1u);
-  EXPECT_NEAR(imp.result->show.cameras[0].target.x, 5.0, 0.01);
-  EXPECT_NEAR(imp.result->show.cameras[0].target.y, 0.5 * f.position.y, 0.01);
-  EXPECT_NEAR(imp.result->show.cameras[0].target.z, -5.0, 0.01);
+  const CameraDef& cam = imp.result->show.cameras[0];
+  for (const glm::vec3 p : {f.position, glm::vec3(5, 0, -5)}) {
+    const glm::vec2 at = framePlace(cam, p);
+    EXPECT_LE(std::abs(at.x), 1.0f) << p.y;
+    EXPECT_LE(std::abs(at.y), 1.0f) << p.y;
+  }
+  EXPECT_GT(cam.position.z, -5.0f + 1.0f);
   // Unused MVR fields are warned with their XML place.
   bool castShadowWarned = false;
   for (const auto& w : imp.result->warnings)
@@ -373,8 +384,14 @@ TEST(MvrImport, OverviewCameraIsInsideTheTheatre) {
   }
   ASSERT_LT(ceilingLowest, 1e29);
   EXPECT_LT(cam->position.y, ceilingLowest);
-  // The target is the middle of the pendants (y 7.8169) and their focus points (y 2.4384).
-  EXPECT_NEAR(cam->target.y, 0.5 * (7.8169 + 2.4384), 0.01);
+  // Every pendant, its focus point (y 2.4384) and the floor below it are in the picture.
+  for (const FixtureDef& f : imp.result->show.fixtures) {
+    for (const float y : {f.position.y, 2.4384f, 0.0f}) {
+      const glm::vec2 at = framePlace(*cam, {f.position.x, y, f.position.z});
+      EXPECT_LE(std::abs(at.x), 1.0f) << f.id << " at y " << y;
+      EXPECT_LE(std::abs(at.y), 1.0f) << f.id << " at y " << y;
+    }
+  }
 }
 
 // --- broken MVRs ---------------------------------------------------------------------------
