@@ -14,6 +14,7 @@
 
 #include "fixtures/color.h"
 #include "fixtures/core/text_file.h"
+#include "fixtures/json_read.h"
 #include "shows/cue_number.h"
 #include "shows/effects.h"
 #include "shows/palettes.h"
@@ -26,203 +27,27 @@ namespace {
 
 using json = nlohmann::json;
 
-// Any number a show holds fits comfortably here; larger ones are typos or hostile input (and
-// would overflow the floats the model keeps).
-constexpr double kMaxMagnitude = 1e9;
-
 struct TooDeep {};
-
-const char* typeName(const json& j) {
-  switch (j.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::string: return "a string";
-    case json::value_t::array: return "an array";
-    case json::value_t::object: return "an object";
-    case json::value_t::discarded: return "nothing";
-    default: return "a number";
-  }
-}
-
-std::string numberText(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-// Collects problems while walking the document; each read reports what it expected.
-class Reader {
- public:
-  Reader(std::string file, std::vector<Error>& problems) : file_(std::move(file)), problems_(problems) {}
-
-  void problem(const std::string& ptr, std::string message) {
-    problems_.push_back(Error{file_, ptr, std::move(message)});
-  }
-
-  // The member, or null when absent (a problem when required).
-  const json* member(const json& obj, const std::string& ptr, const char* key, bool required) {
-    auto it = obj.find(key);
-    if (it == obj.end()) {
-      if (required) problem(ptr + "/" + key, std::string("missing required key \"") + key + "\"");
-      return nullptr;
-    }
-    return &*it;
-  }
-
-  void onlyKeys(const json& obj, const std::string& ptr, std::initializer_list<const char*> keys) {
-    for (auto it = obj.begin(); it != obj.end(); ++it) {
-      bool known = false;
-      for (const char* k : keys) known = known || it.key() == k;
-      if (known) continue;
-      std::string list;
-      for (const char* k : keys) list += std::string(list.empty() ? "" : ", ") + k;
-      problem(ptr + "/" + pointerToken(it.key()),
-              "unknown key \"" + it.key() + "\"; expected one of: " + list);
-    }
-  }
-
-  bool isObject(const json& j, const std::string& ptr, const char* what) {
-    if (j.is_object()) return true;
-    problem(ptr, std::string("expected ") + what + " (an object), got " + typeName(j));
-    return false;
-  }
-
-  bool isArray(const json& j, const std::string& ptr, const char* what) {
-    if (j.is_array()) return true;
-    problem(ptr, std::string("expected ") + what + " (an array), got " + typeName(j));
-    return false;
-  }
-
-  // A number within [lo, hi] (each bound optional through +-infinity); false (and a problem) when not.
-  bool number(const json& j, const std::string& ptr, double lo, double hi, const char* what, double& out) {
-    if (!j.is_number()) {
-      problem(ptr, std::string("expected ") + what + " (a number), got " + typeName(j));
-      return false;
-    }
-    double v = j.get<double>();
-    if (!std::isfinite(v) || std::fabs(v) > kMaxMagnitude) {
-      problem(ptr, std::string("expected ") + what + ", got a number too large to be meant");
-      return false;
-    }
-    if (v < lo || v > hi) {
-      std::string range;
-      if (std::isfinite(lo) && std::isfinite(hi))
-        range = "from " + numberText(lo) + " to " + numberText(hi);
-      else if (std::isfinite(lo))
-        range = lo == 0 ? "that is not negative" : "of at least " + numberText(lo);
-      else
-        range = "of at most " + numberText(hi);
-      problem(ptr, std::string("expected ") + what + " " + range + ", got " + numberText(v));
-      return false;
-    }
-    out = v;
-    return true;
-  }
-
-  bool numberMember(const json& obj, const std::string& ptr, const char* key, bool required,
-                    double lo, double hi, const char* what, float& out) {
-    const json* j = member(obj, ptr, key, required);
-    double v = 0;
-    if (!j || !number(*j, ptr + "/" + key, lo, hi, what, v)) return false;
-    out = static_cast<float>(v);
-    return true;
-  }
-
-  bool integer(const json& j, const std::string& ptr, long long lo, long long hi, const char* what, int& out) {
-    bool isInt = j.is_number_integer();
-    if (!isInt && j.is_number_float()) {
-      double d = j.get<double>();
-      isInt = std::isfinite(d) && std::floor(d) == d && std::fabs(d) < 1e15;
-    }
-    if (!isInt) {
-      problem(ptr, std::string("expected ") + what + " (a whole number), got " +
-                       (j.is_number() ? "a fraction" : typeName(j)));
-      return false;
-    }
-    long long v = 0;
-    if (j.is_number_unsigned()) {
-      unsigned long long u = j.get<unsigned long long>();
-      v = u > static_cast<unsigned long long>(LLONG_MAX) ? LLONG_MAX : static_cast<long long>(u);
-    } else if (j.is_number_integer()) {
-      v = j.get<long long>();
-    } else {
-      v = static_cast<long long>(j.get<double>());
-    }
-    if (v < lo || v > hi) {
-      problem(ptr, std::string("expected ") + what + " from " + std::to_string(lo) + " to " +
-                       std::to_string(hi) + ", got " + std::to_string(v));
-      return false;
-    }
-    out = static_cast<int>(v);
-    return true;
-  }
-
-  bool string(const json& j, const std::string& ptr, const char* what, std::string& out, bool nonEmpty) {
-    if (!j.is_string()) {
-      problem(ptr, std::string("expected ") + what + " (a string), got " + typeName(j));
-      return false;
-    }
-    if (nonEmpty && j.get_ref<const std::string&>().empty()) {
-      problem(ptr, std::string("expected ") + what + ", got an empty string");
-      return false;
-    }
-    out = j.get<std::string>();
-    return true;
-  }
-
-  bool stringMember(const json& obj, const std::string& ptr, const char* key, bool required,
-                    const char* what, std::string& out, bool nonEmpty) {
-    const json* j = member(obj, ptr, key, required);
-    return j && string(*j, ptr + "/" + key, what, out, nonEmpty);
-  }
-
-  // [x, y, z] with each component in [lo, hi].
-  bool vec3(const json& j, const std::string& ptr, double lo, double hi, const char* what, glm::vec3& out) {
-    if (!j.is_array() || j.size() != 3) {
-      problem(ptr, std::string("expected ") + what + " as an array of 3 numbers, got " +
-                       (j.is_array() ? "an array of " + std::to_string(j.size()) : std::string(typeName(j))));
-      return false;
-    }
-    glm::vec3 v{0.0f};
-    bool ok = true;
-    for (int i = 0; i < 3; ++i) {
-      double c = 0;
-      ok = number(j[static_cast<size_t>(i)], ptr + "/" + std::to_string(i), lo, hi, what, c) && ok;
-      v[i] = static_cast<float>(c);
-    }
-    if (ok) out = v;
-    return ok;
-  }
-
-  bool vec3Member(const json& obj, const std::string& ptr, const char* key, bool required,
-                  double lo, double hi, const char* what, glm::vec3& out) {
-    const json* j = member(obj, ptr, key, required);
-    return j && vec3(*j, ptr + "/" + key, lo, hi, what, out);
-  }
-
-  // A number (grey) or [r, g, b], each not negative.
-  bool greyOrRgb(const json& j, const std::string& ptr, const char* what, glm::vec3& out) {
-    if (j.is_number()) {
-      double v = 0;
-      if (!number(j, ptr, 0.0, kMaxMagnitude, what, v)) return false;
-      out = glm::vec3(static_cast<float>(v));
-      return true;
-    }
-    if (j.is_array()) return vec3(j, ptr, 0.0, kMaxMagnitude, what, out);
-    problem(ptr, std::string("expected ") + what + " as a number or [r, g, b], got " + typeName(j));
-    return false;
-  }
-
- private:
-  std::string file_;
-  std::vector<Error>& problems_;
-};
 
 constexpr double kInf = INFINITY;
 // A wheel spinning 100 turns a second is far past any motor; a bigger number is a typing slip.
 constexpr double kMaxSpinDegS = 36000.0;
 
-void readVenue(Reader& r, const json& root, Show& show) {
+// A number (grey) or [r, g, b], each not negative.
+bool greyOrRgb(JsonProblems& r, const json& j, const std::string& ptr, const char* what, glm::vec3& out) {
+  if (j.is_number()) {
+    double v = 0;
+    if (!r.number(j, ptr, 0.0, kMaxJsonMagnitude, what, v)) return false;
+    out = glm::vec3(static_cast<float>(v));
+    return true;
+  }
+  if (j.is_array()) return r.vec3(j, ptr, 0.0, kMaxJsonMagnitude, what, out);
+  r.problem(ptr, std::string("expected ") + what + " as a number or [r, g, b], got " + jsonKind(j));
+  return false;
+}
+
+
+void readVenue(JsonProblems& r, const json& root, Show& show) {
   const json* v = r.member(root, "", "venue", false);
   if (!v || v->is_null()) return;
   if (!r.isObject(*v, "/venue", "the venue")) return;
@@ -230,7 +55,7 @@ void readVenue(Reader& r, const json& root, Show& show) {
   r.stringMember(*v, "/venue", "gltf", true, "the path of a glTF file", show.venueGltf, true);
 }
 
-void readMvrSource(Reader& r, const json& root, Show& show) {
+void readMvrSource(JsonProblems& r, const json& root, Show& show) {
   const json* v = r.member(root, "", "mvr", false);
   if (!v || v->is_null()) return;
   if (!r.isObject(*v, "/mvr", "the MVR the show came from")) return;
@@ -241,7 +66,7 @@ void readMvrSource(Reader& r, const json& root, Show& show) {
 // atmosphere.density (docs/shows.md, "Density"). A grid too large to simulate is refused here,
 // with what it would need; hazers outside the venue are clamped when the field is made (the
 // venue's bounds are not known here).
-void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) {
+void readDensity(JsonProblems& r, const json& j, const std::string& p, AtmosphereDef& at) {
   if (!r.isObject(j, p, "the density field")) return;
   DensitySpec d;
   r.onlyKeys(j, p, {"base", "grid", "bounds", "air_flow", "mixing", "dissipation", "warmup", "still", "fog", "boxes",
@@ -278,8 +103,8 @@ void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& 
     glm::vec3 lo{0.0f}, hi{0.0f};
     if (!b->is_array() || b->size() != 2) {
       r.problem(p + "/bounds", "expected the grid's box as [[x, y, z], [x, y, z]] (its two corners)");
-    } else if (r.vec3((*b)[0], p + "/bounds/0", -kMaxMagnitude, kMaxMagnitude, "a corner in metres", lo) &&
-               r.vec3((*b)[1], p + "/bounds/1", -kMaxMagnitude, kMaxMagnitude, "a corner in metres", hi)) {
+    } else if (r.vec3((*b)[0], p + "/bounds/0", -kMaxJsonMagnitude, kMaxJsonMagnitude, "a corner in metres", lo) &&
+               r.vec3((*b)[1], p + "/bounds/1", -kMaxJsonMagnitude, kMaxJsonMagnitude, "a corner in metres", hi)) {
       if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
         r.problem(p + "/bounds", "the second corner must be above the first on every axis");
       d.boundsMinM = lo;
@@ -295,7 +120,7 @@ void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& 
     if (s->is_boolean())
       d.still = s->get<bool>();
     else
-      r.problem(p + "/still", std::string("expected true or false, got ") + typeName(*s));
+      r.problem(p + "/still", std::string("expected true or false, got ") + jsonKind(*s));
   }
   if (const json* f = r.member(j, p, "fog", false); f && r.isObject(*f, p + "/fog", "the ground fog")) {
     FogLayerSpec fog;
@@ -312,8 +137,8 @@ void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& 
       if (!r.isObject(b, bp, "a density box")) continue;
       DensityBoxSpec box;
       r.onlyKeys(b, bp, {"min", "max", "density"});
-      r.vec3Member(b, bp, "min", true, -kMaxMagnitude, kMaxMagnitude, "a corner in metres", box.minM);
-      r.vec3Member(b, bp, "max", true, -kMaxMagnitude, kMaxMagnitude, "a corner in metres", box.maxM);
+      r.vec3Member(b, bp, "min", true, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a corner in metres", box.minM);
+      r.vec3Member(b, bp, "max", true, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a corner in metres", box.maxM);
       r.numberMember(b, bp, "density", true, 0.0, 1e6, "the box's density", box.density);
       d.boxes.push_back(box);
     }
@@ -325,8 +150,8 @@ void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& 
       if (!r.isObject(h, hp, "a hazer")) continue;
       HazerSpec hz;
       r.onlyKeys(h, hp, {"position", "direction", "output", "spread", "speed"});
-      r.vec3Member(h, hp, "position", true, -kMaxMagnitude, kMaxMagnitude, "a position in metres", hz.positionM);
-      if (r.vec3Member(h, hp, "direction", false, -kMaxMagnitude, kMaxMagnitude, "a direction", hz.direction) &&
+      r.vec3Member(h, hp, "position", true, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a position in metres", hz.positionM);
+      if (r.vec3Member(h, hp, "direction", false, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a direction", hz.direction) &&
           hz.direction == glm::vec3(0.0f))
         r.problem(hp + "/direction", "expected a direction, got [0, 0, 0]");
       r.numberMember(h, hp, "output", false, 0.0, 1e4, "an output in m^3/s of haze at density 1", hz.output);
@@ -338,7 +163,7 @@ void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& 
   at.density = d;
 }
 
-void readSun(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) {
+void readSun(JsonProblems& r, const json& j, const std::string& p, AtmosphereDef& at) {
   if (!r.isObject(j, p, "the sun")) return;
   r.onlyKeys(j, p, {"enabled", "azimuth", "elevation", "illuminance_lux", "color"});
   SunDef sun;
@@ -346,18 +171,18 @@ void readSun(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) 
     if (e->is_boolean())
       sun.enabled = e->get<bool>();
     else
-      r.problem(p + "/enabled", std::string("expected true or false, got ") + typeName(*e));
+      r.problem(p + "/enabled", std::string("expected true or false, got ") + jsonKind(*e));
   }
   r.numberMember(j, p, "azimuth", false, -360.0, 360.0, "an azimuth in degrees from north (-Z) towards east (+X)",
                  sun.azimuthDeg);
   r.numberMember(j, p, "elevation", false, -90.0, 90.0, "an elevation in degrees above the horizon", sun.elevationDeg);
   r.numberMember(j, p, "illuminance_lux", false, 0.0, 1e6, "an illuminance in lux", sun.illuminanceLux);
-  if (const json* c = r.member(j, p, "color", false)) r.greyOrRgb(*c, p + "/color", "the sun's colour", sun.color);
+  if (const json* c = r.member(j, p, "color", false)) greyOrRgb(r, *c, p + "/color", "the sun's colour", sun.color);
   at.sun = sun;
 }
 
 // atmosphere.particles (docs/shows.md, "Particles").
-void readParticles(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) {
+void readParticles(JsonProblems& r, const json& j, const std::string& p, AtmosphereDef& at) {
   if (!r.isObject(j, p, "the particles")) return;
   r.onlyKeys(j, p, {"enabled", "density", "size_um", "size_sigma", "brightness", "seed"});
   ParticleSettings ps;
@@ -365,7 +190,7 @@ void readParticles(Reader& r, const json& j, const std::string& p, AtmosphereDef
     if (e->is_boolean())
       ps.enabled = e->get<bool>();
     else
-      r.problem(p + "/enabled", std::string("expected true or false, got ") + typeName(*e));
+      r.problem(p + "/enabled", std::string("expected true or false, got ") + jsonKind(*e));
   }
   r.numberMember(j, p, "density", false, 0.0, kMaxParticleDensityPerM3, "particles per m^3", ps.densityPerM3);
   r.numberMember(j, p, "size_um", false, 1.0, 1000.0, "a median diameter in micrometres", ps.sizeUm);
@@ -378,7 +203,7 @@ void readParticles(Reader& r, const json& j, const std::string& p, AtmosphereDef
   at.particles = ps;
 }
 
-void readAtmosphere(Reader& r, const json& root, Show& show) {
+void readAtmosphere(JsonProblems& r, const json& root, Show& show) {
   const json* a = r.member(root, "", "atmosphere", false);
   if (!a || !r.isObject(*a, "/atmosphere", "the atmosphere")) return;
   const std::string p = "/atmosphere";
@@ -394,9 +219,9 @@ void readAtmosphere(Reader& r, const json& root, Show& show) {
       r.problem(p + "/phase", "unknown phase function \"" + phase + "\"; expected hazy, isotropic or hg");
   }
   r.numberMember(*a, p, "g", false, -0.99, 0.99, "the Henyey-Greenstein g", at.g);
-  if (const json* j = r.member(*a, p, "ambient", false)) r.greyOrRgb(*j, p + "/ambient", "the ambient light", at.ambient);
+  if (const json* j = r.member(*a, p, "ambient", false)) greyOrRgb(r, *j, p + "/ambient", "the ambient light", at.ambient);
   if (const json* j = r.member(*a, p, "background", false))
-    r.greyOrRgb(*j, p + "/background", "the background radiance", at.background);
+    greyOrRgb(r, *j, p + "/background", "the background radiance", at.background);
   if (const json* j = r.member(*a, p, "density", false)) readDensity(r, *j, p + "/density", at);
   std::string shadows;
   if (r.stringMember(*a, p, "shadows", false, "a shadow kind", shadows, true)) {
@@ -409,7 +234,7 @@ void readAtmosphere(Reader& r, const json& root, Show& show) {
   if (const json* j = r.member(*a, p, "particles", false)) readParticles(r, *j, p + "/particles", at);
 }
 
-void readCameras(Reader& r, const json& root, Show& show) {
+void readCameras(JsonProblems& r, const json& root, Show& show) {
   const json* cams = r.member(root, "", "cameras", false);
   if (!cams || !r.isArray(*cams, "/cameras", "the camera list")) return;
   for (size_t i = 0; i < cams->size(); ++i) {
@@ -449,7 +274,7 @@ void readCameras(Reader& r, const json& root, Show& show) {
   }
 }
 
-void readProfiles(Reader& r, const json& root, Show& show) {
+void readProfiles(JsonProblems& r, const json& root, Show& show) {
   const json* profs = r.member(root, "", "profiles", true);
   if (!profs || !r.isObject(*profs, "/profiles", "profiles by name")) return;
   for (auto it = profs->begin(); it != profs->end(); ++it) {
@@ -472,14 +297,14 @@ void readProfiles(Reader& r, const json& root, Show& show) {
       }
     } else {
       r.problem(p, std::string("expected the path of a profile file (a string) or an inline profile "
-                               "(an object), got ") + typeName(*it));
+                               "(an object), got ") + jsonKind(*it));
       continue;
     }
     show.profiles[it.key()] = std::move(ref);
   }
 }
 
-void readFixtures(Reader& r, const json& root, Show& show) {
+void readFixtures(JsonProblems& r, const json& root, Show& show) {
   const json* fix = r.member(root, "", "fixtures", true);
   if (!fix || !r.isArray(*fix, "/fixtures", "the fixture list")) return;
   for (size_t i = 0; i < fix->size(); ++i) {
@@ -521,7 +346,7 @@ void readFixtures(Reader& r, const json& root, Show& show) {
   }
 }
 
-bool readFixtureKey(Reader& r, const std::string& key, const std::string& p, int& id) {
+bool readFixtureKey(JsonProblems& r, const std::string& key, const std::string& p, int& id) {
   long long v = 0;
   auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), v);
   bool canonical = !key.empty() && key[0] != '0' && ec == std::errc() && end == key.data() + key.size();
@@ -544,7 +369,7 @@ int countedKey(const std::string& key) {
 }
 
 // "cells": {"1": {"intensity", "color"}, ...}: cells counted from 1 (docs/cells.md).
-void readCellValues(Reader& r, const json& cells, const std::string& cp, CueValues& v) {
+void readCellValues(JsonProblems& r, const json& cells, const std::string& cp, CueValues& v) {
   if (!r.isObject(cells, cp, "values by cell number")) return;
   for (auto it = cells.begin(); it != cells.end(); ++it) {
     const std::string p = cp + "/" + pointerToken(it.key());
@@ -567,7 +392,7 @@ void readCellValues(Reader& r, const json& cells, const std::string& cp, CueValu
 }
 
 // frost, focus, prism, prism_rotation, blades, blade_rotation, shutter (docs/show-format.md).
-void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues& v) {
+void readOpticsValues(JsonProblems& r, const json& a, const std::string& p, CueValues& v) {
   double x = 0;
   if (const json* j = r.member(a, p, "frost", false))
     if (r.number(*j, p + "/frost", 0.0, 1.0, "a frost (0..1)", x)) v.frost = static_cast<float>(x);
@@ -583,7 +408,7 @@ void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues&
     const std::string bp = p + "/blades";
     if (!j->is_array() || j->size() != 4) {
       r.problem(bp, std::string("expected four [a, b] pairs (one per blade), got ") +
-                        (j->is_array() ? "an array of " + std::to_string(j->size()) : std::string(typeName(*j))));
+                        (j->is_array() ? "an array of " + std::to_string(j->size()) : std::string(jsonKind(*j))));
     } else {
       BladeInsertions blades{};
       bool ok = true;
@@ -592,7 +417,7 @@ void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues&
         const std::string ep = bp + "/" + std::to_string(k);
         if (!e.is_array() || e.size() != 2) {
           r.problem(ep, std::string("expected the insertions of the blade's two ends, [a, b], got ") +
-                            (e.is_array() ? "an array of " + std::to_string(e.size()) : std::string(typeName(e))));
+                            (e.is_array() ? "an array of " + std::to_string(e.size()) : std::string(jsonKind(e))));
           ok = false;
           continue;
         }
@@ -642,7 +467,7 @@ void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues&
 }
 
 // "palettes": {"position": "Centre", "color": "Red", ...}: one palette name per kind.
-void readPaletteRefs(Reader& r, const json& j, const std::string& p, PaletteRefs& refs) {
+void readPaletteRefs(JsonProblems& r, const json& j, const std::string& p, PaletteRefs& refs) {
   if (!r.isObject(j, p, "palette names by kind")) return;
   r.onlyKeys(j, p, {"all", "position", "color", "beam"});
   r.stringMember(j, p, "all", false, "the name of an \"all\" palette", refs.all, true);
@@ -653,7 +478,7 @@ void readPaletteRefs(Reader& r, const json& j, const std::string& p, PaletteRefs
 
 // One fixture's (or group's) attribute values; `palettes` only where references are allowed
 // (cues: yes; palettes themselves: no, so references cannot form a cycle).
-void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValues& v, bool allowPalettes) {
+void readAttributeValues(JsonProblems& r, const json& a, const std::string& p, CueValues& v, bool allowPalettes) {
   if (allowPalettes)
     r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "gobo2", "gobo2_rotation",
                       "color2", "cto",
@@ -698,7 +523,7 @@ void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValu
 }
 
 // Values keyed by fixture id, as cues and palettes hold them.
-void readFixtureValues(Reader& r, const json& vals, const std::string& vp, std::map<int, CueValues>& out,
+void readFixtureValues(JsonProblems& r, const json& vals, const std::string& vp, std::map<int, CueValues>& out,
                        bool allowPalettes) {
   if (!r.isObject(vals, vp, "values by fixture id")) return;
   for (auto it = vals.begin(); it != vals.end(); ++it) {
@@ -712,7 +537,7 @@ void readFixtureValues(Reader& r, const json& vals, const std::string& vp, std::
   }
 }
 
-void readGroups(Reader& r, const json& root, Show& show) {
+void readGroups(JsonProblems& r, const json& root, Show& show) {
   const json* groups = r.member(root, "", "groups", false);
   if (!groups || !r.isArray(*groups, "/groups", "the groups")) return;
   for (size_t i = 0; i < groups->size(); ++i) {
@@ -733,7 +558,7 @@ void readGroups(Reader& r, const json& root, Show& show) {
   }
 }
 
-void readPalettes(Reader& r, const json& root, Show& show) {
+void readPalettes(JsonProblems& r, const json& root, Show& show) {
   const json* pals = r.member(root, "", "palettes", false);
   if (!pals || !r.isArray(*pals, "/palettes", "the palettes")) return;
   for (size_t i = 0; i < pals->size(); ++i) {
@@ -766,7 +591,7 @@ void readPalettes(Reader& r, const json& root, Show& show) {
 
 // "timing": {"up", "down", "position", "color", "beam": {"delay", "fade"}, "fan": {"group",
 // "delay", "fade"}, "curve": "linear" | "s-curve"} (docs/show-format.md, "Timing").
-void readTiming(Reader& r, const json& j, const std::string& p, CueTimingDef& t) {
+void readTiming(JsonProblems& r, const json& j, const std::string& p, CueTimingDef& t) {
   if (!r.isObject(j, p, "the cue's timing")) return;
   r.onlyKeys(j, p, {"up", "down", "position", "color", "beam", "fan", "curve"});
   double x = 0;
@@ -814,7 +639,7 @@ constexpr size_t kMaxEffectColors = 64;
 // "effects": [{"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed", "colors"}]
 // "hazers": {"1": {"output", "fan"}}: hazers of atmosphere.density counted from 1 (docs/shows.md,
 // "Hazers in cues"); the atmosphere is read before the cue lists.
-void readHazerLevels(Reader& r, const json& j, const std::string& hp, const Show& show, std::map<int, HazerCueDef>& out) {
+void readHazerLevels(JsonProblems& r, const json& j, const std::string& hp, const Show& show, std::map<int, HazerCueDef>& out) {
   if (!r.isObject(j, hp, "hazer levels by hazer number")) return;
   const size_t count = show.atmosphere.density ? show.atmosphere.density->hazers.size() : 0;
   for (auto it = j.begin(); it != j.end(); ++it) {
@@ -842,7 +667,7 @@ void readHazerLevels(Reader& r, const json& j, const std::string& hp, const Show
   }
 }
 
-void readEffects(Reader& r, const json& j, const std::string& ep, std::vector<EffectDef>& out) {
+void readEffects(JsonProblems& r, const json& j, const std::string& ep, std::vector<EffectDef>& out) {
   if (!r.isArray(j, ep, "the cue's effects")) return;
   for (size_t i = 0; i < j.size(); ++i) {
     const json& e = j[i];
@@ -917,7 +742,7 @@ void readEffects(Reader& r, const json& j, const std::string& ep, std::vector<Ef
   }
 }
 
-void readCueLists(Reader& r, const json& root, Show& show) {
+void readCueLists(JsonProblems& r, const json& root, Show& show) {
   const json* lists = r.member(root, "", "cue_lists", false);
   if (!lists || !r.isArray(*lists, "/cue_lists", "the cue lists")) return;
   for (size_t li = 0; li < lists->size(); ++li) {
@@ -953,7 +778,7 @@ void readCueLists(Reader& r, const json& root, Show& show) {
                 if (r.number(*j, p + "/follow", 0.0, kInf, "a follow time in seconds", t)) cue.followS = t;
               } else {
                 r.problem(p + "/follow", std::string("expected a follow time in seconds (a number) or null, got ") +
-                                             typeName(*j));
+                                             jsonKind(*j));
               }
             }
             if (r.stringMember(c, p, "timecode", false, "a timecode \"hh:mm:ss:ff\"", cue.timecode, false) &&
@@ -986,18 +811,6 @@ bool migrate(json& root, int version) {
 
 }  // namespace
 
-std::string pointerToken(std::string_view key) {
-  std::string out;
-  for (char c : key) {
-    if (c == '~')
-      out += "~0";
-    else if (c == '/')
-      out += "~1";
-    else
-      out += c;
-  }
-  return out;
-}
 
 FileStamp stampOf(std::string_view bytes) {
   std::uint64_t h = 1469598103934665603ull;
@@ -1033,7 +846,7 @@ Result<std::string> readShowBytes(const std::filesystem::path& file) {
 ShowParse parseShowText(std::string_view text, const std::filesystem::path& file) {
   ShowParse out;
   out.show.file = file;
-  Reader r(file.string(), out.problems);
+  JsonProblems r(file.string(), out.problems);
   json root;
   try {
     json::parser_callback_t limitDepth = [](int depth, json::parse_event_t, json&) {
@@ -1059,7 +872,7 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
 
   try {
     if (!root.is_object()) {
-      r.problem("", std::string("expected a show (a JSON object), got ") + typeName(root));
+      r.problem("", std::string("expected a show (a JSON object), got ") + jsonKind(root));
       return out;
     }
     std::string format;
