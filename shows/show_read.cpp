@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -63,6 +64,53 @@ void readMvrSource(JsonProblems& r, const json& root, Show& show) {
   r.stringMember(*v, "/mvr", "source", true, "the path of an .mvr file", show.mvrSource, true);
 }
 
+// density.grid: cells as a number (each axis) or [x, y, z]; a grid too large to simulate is
+// refused with the memory it would need.
+void readDensityGrid(JsonProblems& r, const json& g, const std::string& gp, DensitySpec& d) {
+  int n[3] = {d.grid[0], d.grid[1], d.grid[2]};
+  bool ok = true;
+  if (g.is_array() && g.size() == 3) {
+    for (size_t k = 0; k < 3; ++k)
+      ok = r.integer(g[k], gp + "/" + std::to_string(k), 1, 1 << 20, "cells along an axis", n[k]) && ok;
+  } else if (g.is_number()) {
+    ok = r.integer(g, gp, 1, 1 << 20, "cells along each axis", n[0]);
+    n[1] = n[2] = n[0];
+  } else {
+    r.problem(gp, "expected the grid's cells as a number or [x, y, z]");
+    ok = false;
+  }
+  if (ok) {
+    const long long cells = static_cast<long long>(n[0]) * n[1] * n[2];
+    const int side = std::max({n[0], n[1], n[2]});
+    if (side > kMaxDensityCellsPerSide || cells > kMaxDensityCells) {
+      r.problem(gp, "a grid of " + std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" + std::to_string(n[2]) +
+                        " cells needs about " + std::to_string(cells * 28 / (1 << 20)) +
+                        " MB to simulate; at most " + std::to_string(kMaxDensityCellsPerSide) + " per side and " +
+                        std::to_string(kMaxDensityCells) + " cells");
+    } else {
+      for (int k = 0; k < 3; ++k) d.grid[k] = n[k];
+    }
+  }
+}
+
+void readHazers(JsonProblems& r, const json& hs, const std::string& p, DensitySpec& d) {
+  for (size_t i = 0; i < hs.size(); ++i) {
+    const std::string hp = p + "/hazers/" + std::to_string(i);
+    const json& h = hs[i];
+    if (!r.isObject(h, hp, "a hazer")) continue;
+    HazerSpec hz;
+    r.onlyKeys(h, hp, {"position", "direction", "output", "spread", "speed"});
+    r.vec3Member(h, hp, "position", true, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a position in metres", hz.positionM);
+    if (r.vec3Member(h, hp, "direction", false, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a direction", hz.direction) &&
+        hz.direction == glm::vec3(0.0f))
+      r.problem(hp + "/direction", "expected a direction, got [0, 0, 0]");
+    r.numberMember(h, hp, "output", false, 0.0, 1e4, "an output in m^3/s of haze at density 1", hz.output);
+    r.numberMember(h, hp, "spread", false, 1.0, 160.0, "the fan's cone angle in degrees", hz.spreadDeg);
+    r.numberMember(h, hp, "speed", false, 0.0, 50.0, "the fan's air speed in m/s", hz.speedMps);
+    d.hazers.push_back(hz);
+  }
+}
+
 // atmosphere.density (docs/shows.md, "Density"). A grid too large to simulate is refused here,
 // with what it would need; hazers outside the venue are clamped when the field is made (the
 // venue's bounds are not known here).
@@ -72,33 +120,7 @@ void readDensity(JsonProblems& r, const json& j, const std::string& p, Atmospher
   r.onlyKeys(j, p, {"base", "grid", "bounds", "air_flow", "mixing", "dissipation", "warmup", "still", "fog", "boxes",
                     "hazers"});
   r.numberMember(j, p, "base", false, 0.0, 1e6, "a density (1 = the atmosphere's own)", d.base);
-  if (const json* g = r.member(j, p, "grid", false)) {
-    const std::string gp = p + "/grid";
-    int n[3] = {d.grid[0], d.grid[1], d.grid[2]};
-    bool ok = true;
-    if (g->is_array() && g->size() == 3) {
-      for (size_t k = 0; k < 3; ++k)
-        ok = r.integer((*g)[k], gp + "/" + std::to_string(k), 1, 1 << 20, "cells along an axis", n[k]) && ok;
-    } else if (g->is_number()) {
-      ok = r.integer(*g, gp, 1, 1 << 20, "cells along each axis", n[0]);
-      n[1] = n[2] = n[0];
-    } else {
-      r.problem(gp, "expected the grid's cells as a number or [x, y, z]");
-      ok = false;
-    }
-    if (ok) {
-      const long long cells = static_cast<long long>(n[0]) * n[1] * n[2];
-      const int side = std::max({n[0], n[1], n[2]});
-      if (side > kMaxDensityCellsPerSide || cells > kMaxDensityCells) {
-        r.problem(gp, "a grid of " + std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" + std::to_string(n[2]) +
-                          " cells needs about " + std::to_string(cells * 28 / (1 << 20)) +
-                          " MB to simulate; at most " + std::to_string(kMaxDensityCellsPerSide) + " per side and " +
-                          std::to_string(kMaxDensityCells) + " cells");
-      } else {
-        for (int k = 0; k < 3; ++k) d.grid[k] = n[k];
-      }
-    }
-  }
+  if (const json* g = r.member(j, p, "grid", false)) readDensityGrid(r, *g, p + "/grid", d);
   if (const json* b = r.member(j, p, "bounds", false)) {
     glm::vec3 lo{0.0f}, hi{0.0f};
     if (!b->is_array() || b->size() != 2) {
@@ -143,23 +165,8 @@ void readDensity(JsonProblems& r, const json& j, const std::string& p, Atmospher
       d.boxes.push_back(box);
     }
   }
-  if (const json* hs = r.member(j, p, "hazers", false); hs && r.isArray(*hs, p + "/hazers", "the hazers")) {
-    for (size_t i = 0; i < hs->size(); ++i) {
-      const std::string hp = p + "/hazers/" + std::to_string(i);
-      const json& h = (*hs)[i];
-      if (!r.isObject(h, hp, "a hazer")) continue;
-      HazerSpec hz;
-      r.onlyKeys(h, hp, {"position", "direction", "output", "spread", "speed"});
-      r.vec3Member(h, hp, "position", true, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a position in metres", hz.positionM);
-      if (r.vec3Member(h, hp, "direction", false, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a direction", hz.direction) &&
-          hz.direction == glm::vec3(0.0f))
-        r.problem(hp + "/direction", "expected a direction, got [0, 0, 0]");
-      r.numberMember(h, hp, "output", false, 0.0, 1e4, "an output in m^3/s of haze at density 1", hz.output);
-      r.numberMember(h, hp, "spread", false, 1.0, 160.0, "the fan's cone angle in degrees", hz.spreadDeg);
-      r.numberMember(h, hp, "speed", false, 0.0, 50.0, "the fan's air speed in m/s", hz.speedMps);
-      d.hazers.push_back(hz);
-    }
-  }
+  if (const json* hs = r.member(j, p, "hazers", false); hs && r.isArray(*hs, p + "/hazers", "the hazers"))
+    readHazers(r, *hs, p, d);
   at.density = d;
 }
 
@@ -809,8 +816,64 @@ bool migrate(json& root, int version) {
   return true;
 }
 
-}  // namespace
+// The text as JSON, nesting limited; nullopt (and the problem) when it is not.
+std::optional<json> parseShowJson(std::string_view text, JsonProblems& r) {
+  try {
+    json::parser_callback_t limitDepth = [](int depth, json::parse_event_t, json&) {
+      if (depth > kMaxShowJsonDepth) throw TooDeep{};
+      return true;
+    };
+    return json::parse(text.begin(), text.end(), limitDepth);
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();
+    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error ..."
+    auto colon = what.find(": ");
+    if (colon != std::string::npos) what = what.substr(colon + 2);
+    r.problem(parseErrorPlace(text, e.byte), "the show is not valid JSON: " + what);
+  } catch (const TooDeep&) {
+    r.problem("", "the show nests JSON deeper than " + std::to_string(kMaxShowJsonDepth) +
+                      " levels; a show needs a handful");
+  } catch (const std::exception& e) {
+    r.problem("", std::string("the show cannot be read as JSON: ") + e.what());
+  }
+  return std::nullopt;
+}
 
+// "version", migrated to the newest; 0 (and the problem) when the show cannot be read on.
+int readVersion(JsonProblems& r, json& root) {
+  int version = 0;
+  const json* v = r.member(root, "", "version", true);
+  if (!v || !r.integer(*v, "/version", 1, INT_MAX, "a format version", version)) return 0;
+  if (version > kShowFormatVersion) {
+    r.problem("/version", "this show has format version " + std::to_string(version) +
+                              ", newer than this haze reads (up to " + std::to_string(kShowFormatVersion) +
+                              "); open it with a newer haze");
+    return 0;
+  }
+  if (!migrate(root, version)) {
+    r.problem("/version", "unknown format version " + std::to_string(version) + "; expected " +
+                              std::to_string(kShowFormatVersion));
+    return 0;
+  }
+  return version;
+}
+
+// Cue parts that format version 1 does not have, each a problem in a version-1 file.
+void refuseVersion2Cues(JsonProblems& r, const Show& show, int version) {
+  if (version >= 2) return;
+  for (size_t l = 0; l < show.cueLists.size(); ++l)
+    for (size_t c = 0; c < show.cueLists[l].cues.size(); ++c) {
+      const Cue& cue = show.cueLists[l].cues[c];
+      const std::string p = "/cue_lists/" + std::to_string(l) + "/cues/" + std::to_string(c);
+      const std::string need = " needs format version 2; this file says " + std::to_string(version) +
+                               " (set \"version\": 2)";
+      if (!cue.timing.empty()) r.problem(p + "/timing", "\"timing\"" + need);
+      if (!cue.effects.empty()) r.problem(p + "/effects", "\"effects\"" + need);
+      if (!cue.hazers.empty()) r.problem(p + "/hazers", "\"hazers\"" + need);
+    }
+}
+
+}  // namespace
 
 FileStamp stampOf(std::string_view bytes) {
   std::uint64_t h = 1469598103934665603ull;
@@ -847,28 +910,9 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
   ShowParse out;
   out.show.file = file;
   JsonProblems r(file.string(), out.problems);
-  json root;
-  try {
-    json::parser_callback_t limitDepth = [](int depth, json::parse_event_t, json&) {
-      if (depth > kMaxShowJsonDepth) throw TooDeep{};
-      return true;
-    };
-    root = json::parse(text.begin(), text.end(), limitDepth);
-  } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error ..."
-    auto colon = what.find(": ");
-    if (colon != std::string::npos) what = what.substr(colon + 2);
-    r.problem(parseErrorPlace(text, e.byte), "the show is not valid JSON: " + what);
-    return out;
-  } catch (const TooDeep&) {
-    r.problem("", "the show nests JSON deeper than " + std::to_string(kMaxShowJsonDepth) +
-                      " levels; a show needs a handful");
-    return out;
-  } catch (const std::exception& e) {
-    r.problem("", std::string("the show cannot be read as JSON: ") + e.what());
-    return out;
-  }
+  std::optional<json> parsed = parseShowJson(text, r);
+  if (!parsed) return out;
+  json& root = *parsed;
 
   try {
     if (!root.is_object()) {
@@ -882,23 +926,8 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
                                "\"" + (format == "haze-fixture" ? " (this is a fixture profile, not a show)" : ""));
       return out;
     }
-    int version = 0;
-    if (const json* v = r.member(root, "", "version", true)) {
-      if (!r.integer(*v, "/version", 1, INT_MAX, "a format version", version)) return out;
-      if (version > kShowFormatVersion) {
-        r.problem("/version", "this show has format version " + std::to_string(version) +
-                                  ", newer than this haze reads (up to " + std::to_string(kShowFormatVersion) +
-                                  "); open it with a newer haze");
-        return out;
-      }
-      if (!migrate(root, version)) {
-        r.problem("/version", "unknown format version " + std::to_string(version) + "; expected " +
-                                  std::to_string(kShowFormatVersion));
-        return out;
-      }
-    } else {
-      return out;
-    }
+    const int version = readVersion(r, root);
+    if (version == 0) return out;
     out.show.fileVersion = version;
     if (version < 2)
       for (const char* key : {"groups", "palettes"})
@@ -918,17 +947,7 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
     readGroups(r, root, out.show);
     readPalettes(r, root, out.show);
     readCueLists(r, root, out.show);
-    if (version < 2)
-      for (size_t l = 0; l < out.show.cueLists.size(); ++l)
-        for (size_t c = 0; c < out.show.cueLists[l].cues.size(); ++c) {
-          const Cue& cue = out.show.cueLists[l].cues[c];
-          const std::string p = "/cue_lists/" + std::to_string(l) + "/cues/" + std::to_string(c);
-          const std::string need = " needs format version 2; this file says " + std::to_string(version) +
-                                   " (set \"version\": 2)";
-          if (!cue.timing.empty()) r.problem(p + "/timing", "\"timing\"" + need);
-          if (!cue.effects.empty()) r.problem(p + "/effects", "\"effects\"" + need);
-          if (!cue.hazers.empty()) r.problem(p + "/hazers", "\"hazers\"" + need);
-        }
+    refuseVersion2Cues(r, out.show, version);
   } catch (const std::exception& e) {
     // Every access above checks types first; this is a last guard so nothing escapes the library.
     r.problem("", std::string("the show cannot be read: ") + e.what());
