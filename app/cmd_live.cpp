@@ -20,18 +20,13 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/render_job.h"
-#include "shows/dmx/dmx_reach.h"
-#include "shows/frame/live_playback.h"
+#include "shows/frame/live_session.h"
 #include "shows/frame/live_record.h"
 #include "shows/frame/state_json.h"
-#include "shows/dmx/midi_input.h"
-#include "shows/dmx/midi_timecode.h"
-#include "shows/dmx/osc_command.h"
 #include "app/xchange_station.h"
-#include "shows/dmx/udp_receiver.h"
-#include "shows/movement.h"
 #include "fixtures/core/atomic_file.h"
 #include "shows/cue_number.h"
+#include "shows/id_ranges.h"
 #include "shows/show.h"
 #include "shows/show_json.h"
 
@@ -88,19 +83,33 @@ void printReach(const std::vector<UniverseReach>& reach) {
 volatile std::sig_atomic_t gStop = 0;
 void onSignal(int) { gStop = 1; }
 
-std::string printable(const std::string& s) {
-  std::string out;
-  for (unsigned char c : s) out += (c >= 0x20 && c < 0x7F) ? static_cast<char>(c) : '?';
-  return out;
-}
+// SIGINT and SIGTERM end the receive loop instead of the program while this lives.
+class StopOnSignals {
+ public:
+  StopOnSignals() {
+    struct sigaction sa {};
+    sa.sa_handler = onSignal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &oldInt_);
+    sigaction(SIGTERM, &sa, &oldTerm_);
+    gStop = 0;
+  }
+  ~StopOnSignals() {
+    sigaction(SIGINT, &oldInt_, nullptr);
+    sigaction(SIGTERM, &oldTerm_, nullptr);
+  }
+  StopOnSignals(const StopOnSignals&) = delete;
+  StopOnSignals& operator=(const StopOnSignals&) = delete;
 
-struct ControlStats {
-  uint64_t oscCommands = 0, oscRefused = 0, timecodeFired = 0;
-  double longestPassMs = 0.0;
-  int maxWaitMs = 100;
+ private:
+  struct sigaction oldInt_ {}, oldTerm_ {};
 };
 
-void printReport(const LiveReceiver& live, double seconds, const ControlStats& control, bool osc, bool timecode) {
+// What arrived and what was done with it, on exit.
+void printReport(const LiveSession& session, bool timecode) {
+  const LiveReceiver& live = session.receiver();
+  const LiveControlStats& control = session.stats();
+  const double seconds = session.secondsSinceStart();
   const DmxInputStats& s = live.stats();
   std::fprintf(stderr,
                "haze live: %.1f s: %llu datagrams, %llu good (%.1f/s), %llu malformed, %llu ignored, "
@@ -136,14 +145,14 @@ void printReport(const LiveReceiver& live, double seconds, const ControlStats& c
   if (const int polls = live.udp().artPollsAnswered(); polls > 0)
     std::fprintf(stderr, "haze live: answered %d ArtPoll%s (ArtPollReply: a visualiser with the patched universes)\n",
                  polls, polls == 1 ? "" : "s");
-  if (osc)
+  if (session.oscPort())
     std::fprintf(stderr, "haze live: OSC: %llu commands done, %llu refused\n",
                  static_cast<unsigned long long>(control.oscCommands), static_cast<unsigned long long>(control.oscRefused));
   if (timecode)
     std::fprintf(stderr, "haze live: timecode: %llu ArtTimeCode packets, %llu cue firings or chases\n",
                  static_cast<unsigned long long>(s.timecodePackets), static_cast<unsigned long long>(control.timecodeFired));
   std::fprintf(stderr, "haze live: longest pass of the receive loop: %.1f ms (a pass waits up to %d ms for input)\n",
-               control.longestPassMs, control.maxWaitMs);
+               control.longestPassMs, session.maxWaitMs());
   for (const auto& [reason, count] : s.malformed) {
     std::fprintf(stderr, "haze live: malformed %s: %llu\n", reason.c_str(),
                  static_cast<unsigned long long>(count));
@@ -158,277 +167,175 @@ void printReport(const LiveReceiver& live, double seconds, const ControlStats& c
                  name.c_str(), src.universe, src.priority, src.perSlotPriority ? " (per-slot priorities)" : "",
                  src.winning ? "" : " (outranked)");
   }
+  if (session.mtcOpen()) {
+    const MtcStats& m = session.mtcStats();
+    std::fprintf(stderr, "haze live: MTC: %llu quarter frames, %llu full frames, %llu broken cycles, %llu bad times\n",
+                 static_cast<unsigned long long>(m.quarterFrames), static_cast<unsigned long long>(m.fullFrames),
+                 static_cast<unsigned long long>(m.brokenCycles), static_cast<unsigned long long>(m.badTimes));
+  }
+}
+
+// What the command line says.
+struct LiveArgs {
+  std::string showPath, stateJson, renderOut, onLoss = "hold", quality = "default", exposureMode, movement = "real";
+  double exposure = std::nan("");
+  LiveInputs inputs;
+  RenderJobOptions render;
+  bool artNet = false, sacn = false;
+  double duration = 0.0;
+  int artNetPort = inputs.dmx.udp.artNetPort, sacnPort = inputs.dmx.udp.sacnPort;
+  bool noPreview = false, noSync = false;
+  std::string cueListName, recordCue, recordLabel;
+  XchangeOptions xchange;  // --mvr-xchange and its options (app/xchange_station.h)
+  bool playback() const { return inputs.oscPort >= 0 || inputs.artTimecode || inputs.mtc; }
+};
+
+// Parses and checks the options against each other; an exit status when that is all (help, a
+// usage error).
+std::optional<int> parseLiveArgs(const Args& args, CommandLine& cli, LiveArgs& a) {
+  LiveOptions& options = a.inputs.dmx;
+  RenderJobOptions& render = a.render;
+  cli.flag("--artnet", a.artNet)
+      .flag("--sacn", a.sacn)
+      .text("--bind", options.udp.bindAddress, "an IPv4 address such as 127.0.0.1")
+      .number("--duration", a.duration, 0, 1e7, "seconds >= 0")
+      .text("--state-json", a.stateJson, "an output file")
+      .text("--render", a.renderOut, "an output image (.png or .pfm)")
+      .integer("--artnet-port", a.artNetPort, 0, 65535, "a port 0..65535")
+      .integer("--sacn-port", a.sacnPort, 0, 65535, "a port 0..65535")
+      .flag("--multicast", options.udp.multicast)
+      .choice("--on-loss", a.onLoss, {"hold", "blackout"})
+      .flag("--no-preview", a.noPreview)
+      .choice("--movement", a.movement, {"real", "instant"})
+      .text("--camera", render.camera, "a camera name")
+      .integer("--width", render.width, 1, 16384, "a whole number 1..16384")
+      .integer("--height", render.height, 1, 16384, "a whole number 1..16384")
+      .choice("--quality", a.quality, {"draft", "default", "high", "reference"})
+      .number("--exposure", a.exposure, -100, 100, "a number of EV")
+      .choice("--exposure-mode", a.exposureMode, {"auto", "manual"})
+      .integer("--osc", a.inputs.oscPort, 0, 65535, "a port 0..65535")
+      .flag("--timecode", a.inputs.artTimecode)
+      .flag("--mtc", a.inputs.mtc)
+      .text("--mtc-from", a.inputs.mtcFrom, "an ALSA sequencer address (CLIENT:PORT)")
+      .text("--cue-list", a.cueListName, "a cue list name")
+      .text("--record-cue", a.recordCue, "a cue number such as 10")
+      .text("--label", a.recordLabel, "a cue label")
+      .flag("--no-sync", a.noSync)
+      .positional(a.showPath, "show");
+  addXchangeOptions(cli, a.xchange);
+  if (auto done = cli.parse(args)) return *done;
+  if (a.noPreview) options.input.acceptPreview = false;
+  if (a.noSync) options.input.synchronise = false;
+  render.exposureMode = parseExposureMode(a.exposureMode);
+  if (!std::isnan(a.exposure)) render.exposureEv = static_cast<float>(a.exposure);
+  if (a.quality == "draft") render.quality = Quality::Draft;
+  else if (a.quality == "default") render.quality = Quality::Default;
+  else if (a.quality == "high") render.quality = Quality::High;
+  else if (a.quality == "reference") render.quality = Quality::Reference;
+  else return cli.usage("--quality '" + a.quality + "' is not one of draft|default|high|reference");
+  if (!a.artNet && !a.sacn) a.artNet = a.sacn = true;
+  const int oscPort = a.inputs.oscPort;
+  if (oscPort > 0 && ((a.artNet && oscPort == a.artNetPort) || (a.sacn && oscPort == a.sacnPort)))
+    return cli.usage("--osc " + std::to_string(oscPort) + " is the Art-Net or sACN port; expected a port of its own (e.g. 9000)");
+  if (a.inputs.artTimecode && !a.artNet) return cli.usage("--timecode reads ArtTimeCode, which comes over Art-Net; drop --sacn or add --artnet");
+  if (!a.recordLabel.empty() && a.recordCue.empty()) return cli.usage("--label names the cue --record-cue records; give --record-cue N");
+  if (!a.recordCue.empty() && !isCueNumber(a.recordCue))
+    return cli.usage("--record-cue '" + a.recordCue + "' is not a cue number; expected one like 10 or 1.5");
+  options.udp.artNet = a.artNet;
+  options.udp.sacn = a.sacn;
+  options.udp.artNetPort = a.artNetPort;
+  options.udp.sacnPort = a.sacnPort;
+  options.input.merge.onLoss = a.onLoss == "blackout" ? LossPolicy::Blackout : LossPolicy::HoldLastLook;
+  if (!a.inputs.mtcFrom.empty()) a.inputs.mtc = true;
+  return std::nullopt;
+}
+
+// Passes until SIGINT/SIGTERM or the end of --duration. OSC and timecode are read every pass;
+// the wait for DMX is then short so they are not late.
+void receiveUntilStopped(LiveSession& session, double duration) {
+  const double start = LiveSession::clockS();
+  while (!gStop) {
+    const double elapsed = LiveSession::clockS() - start;
+    if (duration > 0 && elapsed >= duration) break;
+    const double leftMs = duration > 0 ? (duration - elapsed) * 1000.0 : 100.0;
+    session.pass(static_cast<int>(std::clamp(leftMs, 1.0, static_cast<double>(session.maxWaitMs()))));
+  }
+}
+
+// --state-json, --render and --record-cue from the session's last stage; the exit status.
+int writeLiveOutputs(const LiveArgs& a, CommandLine& cli, Show& show, const ProfileSet& profiles,
+                     const CueList* cueList, LiveSession& session) {
+  // What the console and the cues command; with --movement real, where the heads got to.
+  const StageState& state = a.movement == "real" ? session.moved() : session.commanded();
+  int status = 0;
+  if (!a.stateJson.empty()) {
+    const std::string text = stageStateJson(show, profiles, state).dump(2) + "\n";
+    if (Status s = writeFileAtomically(a.stateJson, text, false); !s) status = cli.fail(s.error().str());
+  }
+  if (!a.renderOut.empty()) {
+    RenderJobOptions render = a.render;
+    if (!session.camera().empty()) render.camera = session.camera();  // /haze/camera
+    if (Status s = renderStateToFile(show, profiles, state, render, a.renderOut); !s) status = cli.fail(s.error().str());
+  }
+  if (a.recordCue.empty()) return status;
+  // What DMX (and OSC's programmer) put on stage; fixtures nothing drove are left out, so a
+  // universe the console does not send cannot wipe the tracked look.
+  std::set<int> fixtures = session.receiver().input().dmxFixtures();
+  for (const auto& [id, v] : session.programmer()) fixtures.insert(id);
+  if (fixtures.empty())
+    return cli.fail("--record-cue " + a.recordCue + ": no fixture received DMX; nothing recorded and " + a.showPath +
+                    " left as it was");
+  // The session's playback references the show; it is not used after this point.
+  Result<std::string> rec = recordLiveCue(show, profiles, session.commanded(), fixtures,
+                                          LiveRecord{cueList ? cueList->name : "", a.recordCue, a.recordLabel});
+  if (!rec) return cli.fail(a.showPath + ": " + rec.error().str());
+  std::fprintf(stderr, "haze live: %s\n", rec->c_str());
+  return status;
+}
+
+const CueList* findCueList(const Show& show, const std::string& name) {
+  for (const CueList& l : show.cueLists)
+    if (name.empty() || l.name == name) return &l;
+  return nullptr;
 }
 
 }  // namespace
 
 int runLive(const Args& args) {
-  std::string showPath, stateJson, renderOut, onLoss = "hold", quality = "default", exposureMode, movement = "real";
-  double exposure = std::nan("");
-  LiveOptions options;
-  RenderJobOptions render;
-  bool artNet = false, sacn = false;
-  double duration = 0.0;
-  int artNetPort = options.udp.artNetPort, sacnPort = options.udp.sacnPort;
-  bool noPreview = false, timecode = false, noSync = false, mtc = false;
-  std::string mtcFrom;
-  int oscPort = -1;
-  std::string cueListName, recordCue, recordLabel;
+  LiveArgs a;
   CommandLine cli("haze live", kUsage);
-  cli.flag("--artnet", artNet)
-      .flag("--sacn", sacn)
-      .text("--bind", options.udp.bindAddress, "an IPv4 address such as 127.0.0.1")
-      .number("--duration", duration, 0, 1e7, "seconds >= 0")
-      .text("--state-json", stateJson, "an output file")
-      .text("--render", renderOut, "an output image (.png or .pfm)")
-      .integer("--artnet-port", artNetPort, 0, 65535, "a port 0..65535")
-      .integer("--sacn-port", sacnPort, 0, 65535, "a port 0..65535")
-      .flag("--multicast", options.udp.multicast)
-      .choice("--on-loss", onLoss, {"hold", "blackout"})
-      .flag("--no-preview", noPreview)
-      .choice("--movement", movement, {"real", "instant"})
-      .text("--camera", render.camera, "a camera name")
-      .integer("--width", render.width, 1, 16384, "a whole number 1..16384")
-      .integer("--height", render.height, 1, 16384, "a whole number 1..16384")
-      .choice("--quality", quality, {"draft", "default", "high", "reference"})
-      .number("--exposure", exposure, -100, 100, "a number of EV")
-      .choice("--exposure-mode", exposureMode, {"auto", "manual"})
-      .integer("--osc", oscPort, 0, 65535, "a port 0..65535")
-      .flag("--timecode", timecode)
-      .flag("--mtc", mtc)
-      .text("--mtc-from", mtcFrom, "an ALSA sequencer address (CLIENT:PORT)")
-      .text("--cue-list", cueListName, "a cue list name")
-      .text("--record-cue", recordCue, "a cue number such as 10")
-      .text("--label", recordLabel, "a cue label")
-      .flag("--no-sync", noSync)
-      .positional(showPath, "show");
-  XchangeOptions xchange;
-  addXchangeOptions(cli, xchange);
-  if (auto done = cli.parse(args)) return *done;
-  if (noPreview) options.input.acceptPreview = false;
-  if (noSync) options.input.synchronise = false;
-  render.exposureMode = parseExposureMode(exposureMode);
-  if (!std::isnan(exposure)) render.exposureEv = static_cast<float>(exposure);
-  const auto fail = [&cli](const std::string& line) { return cli.fail(line); };
-  if (quality == "draft") render.quality = Quality::Draft;
-  else if (quality == "default") render.quality = Quality::Default;
-  else if (quality == "high") render.quality = Quality::High;
-  else if (quality == "reference") render.quality = Quality::Reference;
-  else return cli.usage("--quality '" + quality + "' is not one of draft|default|high|reference");
-  if (!artNet && !sacn) artNet = sacn = true;
-  if (oscPort > 0 && ((artNet && oscPort == artNetPort) || (sacn && oscPort == sacnPort)))
-    return cli.usage("--osc " + std::to_string(oscPort) + " is the Art-Net or sACN port; expected a port of its own (e.g. 9000)");
-  if (timecode && !artNet) return cli.usage("--timecode reads ArtTimeCode, which comes over Art-Net; drop --sacn or add --artnet");
-  if (!recordLabel.empty() && recordCue.empty()) return cli.usage("--label names the cue --record-cue records; give --record-cue N");
-  if (!recordCue.empty() && !isCueNumber(recordCue))
-    return cli.usage("--record-cue '" + recordCue + "' is not a cue number; expected one like 10 or 1.5");
-  options.udp.artNet = artNet;
-  options.udp.sacn = sacn;
-  options.udp.artNetPort = artNetPort;
-  options.udp.sacnPort = sacnPort;
-  options.input.merge.onLoss = onLoss == "blackout" ? LossPolicy::Blackout : LossPolicy::HoldLastLook;
-
-  auto checked = cli.readShow(showPath);
+  if (auto done = parseLiveArgs(args, cli, a)) return *done;
+  auto checked = cli.readShow(a.showPath);
   if (!checked) return kExitBadInput;
-  Show* show = &checked->show;  // --record-cue records into it
-  const ProfileSet* profiles = &checked->profiles;
-  const CueList* cueList = nullptr;
-  for (const CueList& l : show->cueLists)
-    if (cueListName.empty() || l.name == cueListName) {
-      cueList = &l;
-      break;
-    }
-  if (!cueListName.empty() && !cueList) return fail(showPath + ": the show has no cue list \"" + cueListName + "\"");
-  if (!mtcFrom.empty()) mtc = true;
-  const bool playback = oscPort >= 0 || timecode || mtc;
-  LivePlayback livePlayback(*show, *profiles, cueList);
-  if ((timecode || mtc) && cueList &&
+  Show& show = checked->show;  // --record-cue records into it
+  const ProfileSet& profiles = checked->profiles;
+  const CueList* cueList = findCueList(show, a.cueListName);
+  if (!a.cueListName.empty() && !cueList) return cli.fail(a.showPath + ": the show has no cue list \"" + a.cueListName + "\"");
+  const auto log = [](const std::string& line) { std::fprintf(stderr, "haze live: %s\n", line.c_str()); };
+  LiveSession session(show, profiles, {.cueList = cueList, .playback = a.playback(), .followHeads = a.movement == "real"}, log);
+  if ((a.inputs.artTimecode || a.inputs.mtc) && cueList &&
       std::none_of(cueList->cues.begin(), cueList->cues.end(), [](const Cue& c) { return !c.timecode.empty(); }))
-    std::fprintf(stderr, "haze live: --timecode: no cue of the played list has a \"timecode\"; nothing will fire\n");
-
+    log("--timecode: no cue of the played list has a \"timecode\"; nothing will fire");
   // What the console can reach, per universe, so a fixture that ignores it is explained at once.
-  const std::vector<UniverseReach> reach = dmxReach(*show, *profiles);
-  printReach(reach);
-  std::set<int> drivingUniverses, warnedUniverses;
-  for (const UniverseReach& u : reach)
-    if (!u.driven.empty()) drivingUniverses.insert(u.universe);
-  uint64_t goodSeen = 0, unwatchedSeen = 0;
-  // Once per universe: DMX arrives for it, and it drives nothing.
-  const auto warnIdleUniverses = [&](LiveReceiver& r) {
-    if (r.stats().good == goodSeen && r.stats().unwatched == unwatchedSeen) return;
-    goodSeen = r.stats().good;
-    unwatchedSeen = r.stats().unwatched;
-    for (int u : r.stats().unwatchedUniverses)
-      if (warnedUniverses.insert(u).second)
-        std::fprintf(stderr, "haze live: warning: universe %d receives DMX, but no fixture of the show is patched on it\n", u);
-    for (const DmxSourceInfo& s : r.sources())
-      if (!drivingUniverses.count(s.universe) && warnedUniverses.insert(s.universe).second)
-        std::fprintf(stderr, "haze live: warning: universe %d receives DMX, but it drives no fixture (see the lines "
-                     "above for why)\n", s.universe);
-  };
-
-  auto live = LiveReceiver::open(*show, *profiles, options);
-  if (!live) return fail(live.error().str());
-  LiveReceiver& receiver = **live;
-  // Handlers first: a test (or a user) may interrupt as soon as the ports are printed.
-  struct sigaction sa {}, oldInt{}, oldTerm{};
-  sa.sa_handler = onSignal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, &oldInt);
-  sigaction(SIGTERM, &sa, &oldTerm);
-  gStop = 0;
-  if (receiver.udp().artNetPort()) {
-    std::fprintf(stderr, "haze live: Art-Net on %s:%d (haze universe = Port-Address + 1)\n",
-                 options.udp.bindAddress.c_str(), receiver.udp().artNetPort());
-  }
-  if (receiver.udp().sacnPort()) {
-    std::fprintf(stderr, "haze live: sACN on %s:%d\n", options.udp.bindAddress.c_str(),
-                 receiver.udp().sacnPort());
-  }
-  std::unique_ptr<MidiSeqInput> mtcIn;
-  MtcDecoder mtcDecoder;
-  if (mtc) {
-    auto m = MidiSeqInput::open(mtcFrom);
-    if (!m) return fail("--mtc: " + m.error().str());
-    mtcIn = std::move(*m);
-    std::fprintf(stderr, "haze live: MTC on %s (ALSA sequencer client \"haze\", port \"MTC in\"%s)\n",
-                 mtcIn->address().c_str(), mtcFrom.empty() ? "" : ("; connected from " + mtcFrom).c_str());
-  }
-  std::unique_ptr<OscSocket> osc;
-  if (oscPort >= 0) {
-    auto o = OscSocket::open(options.udp.bindAddress, oscPort);
-    if (!o) return fail(o.error().str());
-    osc = std::move(*o);
-    std::fprintf(stderr, "haze live: OSC on %s:%d\n", options.udp.bindAddress.c_str(), osc->port());
-  }
-  std::unique_ptr<XchangeService> xchangeService;  // stopped (MVR_LEAVE sent) when live ends
-  if (xchange.enabled) {
-    auto x = XchangeService::start(showPath, options.udp.bindAddress, xchange);
-    if (!x) return fail(x.error().str());
-    xchangeService = std::move(*x);
-  }
-  for (const std::string& note : receiver.udp().notes()) {
-    std::fprintf(stderr, "haze live: %s\n", note.c_str());
-  }
-  if (playback)
-    std::fprintf(stderr, "haze live: playing %s\n",
-                 cueList ? ("cue list \"" + cueList->name + "\" (" + std::to_string(cueList->cues.size()) + " cues)").c_str()
-                         : "no cue list (the show has none)");
-
-  // OSC and timecode are read every pass; the wait for DMX is then short so they are not late.
-  ControlStats control;
-  constexpr uint64_t kLoggedRefusals = 20;
-  const auto handleOsc = [&](std::span<const uint8_t> datagram, const std::string& from) {
-    OscParse p = parseOscCommand(datagram);
-    if (p.ok) {
-      Result<std::string> done = livePlayback.apply(p.command, LiveReceiver::nowS());
-      if (done) {
-        ++control.oscCommands;
-        std::fprintf(stderr, "haze live: OSC %s from %s: %s\n", printable(p.address).c_str(), from.c_str(), done->c_str());
-      } else {
-        p.ok = false;
-        p.error = done.error().str();
-      }
+  printReach(session.reach());
+  {
+    // Handlers first: a test (or a user) may interrupt as soon as the ports are printed.
+    const StopOnSignals stop;
+    if (Status s = session.listen(a.inputs); !s) return cli.fail(s.error().str());
+    std::unique_ptr<XchangeService> xchange;  // stopped (MVR_LEAVE sent) when the loop ends
+    if (a.xchange.enabled) {
+      auto x = XchangeService::start(a.showPath, a.inputs.dmx.udp.bindAddress, a.xchange);
+      if (!x) return cli.fail(x.error().str());
+      xchange = std::move(*x);
     }
-    if (!p.ok && ++control.oscRefused <= kLoggedRefusals)
-      std::fprintf(stderr, "haze live: OSC from %s refused: %s%s\n", from.c_str(), printable(p.error).c_str(),
-                   control.oscRefused == kLoggedRefusals ? " (further refusals are only counted)" : "");
-    return oscReply(p);
-  };
-  const double start = LiveReceiver::nowS();
-  // The heads follow each DMX value from the moment a poll returns with it (docs/movement.md);
-  // the command before it holds until then. They start where the first DMX puts them, as a rig
-  // that was switched on at the console's look.
-  MovementFollower heads(*show, *profiles);
-  StageState commanded =
-      playback ? livePlayback.stage(LiveReceiver::nowS(), receiver.state(), receiver.input().dmxFixtures()) : receiver.state();
-  heads.reset(commanded, 0.0);
-  bool seeded = false;
-  while (!gStop) {
-    const double elapsed = LiveReceiver::nowS() - start;
-    if (duration > 0 && elapsed >= duration) break;
-    const double leftMs = duration > 0 ? (duration - elapsed) * 1000.0 : 100.0;
-    control.maxWaitMs = playback ? 5 : 100;
-    const double maxWaitMs = control.maxWaitMs;
-    const int waitMs = static_cast<int>(std::clamp(leftMs, 1.0, maxWaitMs));
-    const double passStart = LiveReceiver::nowS();
-    receiver.poll(waitMs);
-    if (osc) osc->pump(handleOsc);
-    if (mtcIn) {
-      mtcIn->pump([&](std::span<const uint8_t> bytes) {
-        for (const MtcReading& r : mtcDecoder.feed(bytes)) {
-          const std::string what = livePlayback.timecode(r.time, r.fps(), LiveReceiver::nowS());
-          if (what.empty()) continue;
-          ++control.timecodeFired;
-          std::fprintf(stderr, "haze live: MTC %s: %s\n", r.time.str().c_str(), what.c_str());
-        }
-      });
-    }
-    if (timecode) {
-      for (const ArtTimeCodePacket& tc : receiver.input().takeTimecodes()) {
-        const std::string what = livePlayback.timecode(tc.time, tc.fps(), LiveReceiver::nowS());
-        if (what.empty()) continue;
-        ++control.timecodeFired;
-        std::fprintf(stderr, "haze live: timecode %s: %s\n", tc.time.str().c_str(), what.c_str());
-      }
-    }
-    const double now = LiveReceiver::nowS() - start;
-    heads.advance(commanded, now, false);
-    commanded = playback ? livePlayback.stage(LiveReceiver::nowS(), receiver.state(), receiver.input().dmxFixtures())
-                         : receiver.state();
-    warnIdleUniverses(receiver);
-    if (!seeded && receiver.stats().good > 0) {
-      heads.reset(commanded, now);
-      seeded = true;
-    }
-    // Whole passes: a pass that found nothing waited waitMs; one that found a flood did its work.
-    control.longestPassMs = std::max(control.longestPassMs, (LiveReceiver::nowS() - passStart) * 1000.0);
+    if (a.playback())
+      log("playing " + (cueList ? "cue list \"" + cueList->name + "\" (" + std::to_string(cueList->cues.size()) + " cues)"
+                                : std::string("no cue list (the show has none)")));
+    receiveUntilStopped(session, a.duration);
+    session.finish();
   }
-  const StageState& dmxState = receiver.poll(0);
-  // What the console and the cues command; the heads get there at their speeds.
-  const StageState commandedState =
-      playback ? livePlayback.stage(LiveReceiver::nowS(), dmxState, receiver.input().dmxFixtures()) : dmxState;
-  const StageState moved = heads.advance(commandedState, LiveReceiver::nowS() - start, false);
-  const StageState& state = movement == "real" ? moved : commandedState;
-  sigaction(SIGINT, &oldInt, nullptr);
-  sigaction(SIGTERM, &oldTerm, nullptr);
-  printReport(receiver, LiveReceiver::nowS() - start, control, osc != nullptr, timecode);
-  if (mtcIn) {
-    const MtcStats& m = mtcDecoder.stats();
-    std::fprintf(stderr, "haze live: MTC: %llu quarter frames, %llu full frames, %llu broken cycles, %llu bad times\n",
-                 static_cast<unsigned long long>(m.quarterFrames), static_cast<unsigned long long>(m.fullFrames),
-                 static_cast<unsigned long long>(m.brokenCycles), static_cast<unsigned long long>(m.badTimes));
-  }
-
-  int status = 0;
-  if (!stateJson.empty()) {
-    const std::string text = stageStateJson(*show, *profiles, state).dump(2) + "\n";
-    if (Status s = writeFileAtomically(stateJson, text, false); !s) status = fail(s.error().str());
-  }
-  if (!renderOut.empty()) {
-    if (!livePlayback.camera().empty()) render.camera = livePlayback.camera();  // /haze/camera
-    if (Status s = renderStateToFile(*show, *profiles, state, render, renderOut); !s) {
-      status = fail(s.error().str());
-    }
-  }
-  if (!recordCue.empty()) {
-    // What DMX (and OSC's programmer) put on stage; fixtures nothing drove are left out, so a
-    // universe the console does not send cannot wipe the tracked look.
-    std::set<int> fixtures = receiver.input().dmxFixtures();
-    for (const auto& [id, v] : livePlayback.programmer()) fixtures.insert(id);
-    if (fixtures.empty()) {
-      status = fail("--record-cue " + recordCue + ": no fixture received DMX; nothing recorded and " + showPath +
-                    " left as it was");
-    } else {
-      // The playback above references the show; it is not used after this point.
-      Result<std::string> rec =
-          recordLiveCue(*show, *profiles, commandedState, fixtures,
-                        LiveRecord{cueList ? cueList->name : "", recordCue, recordLabel});
-      if (!rec) status = fail(showPath + ": " + rec.error().str());
-      else std::fprintf(stderr, "haze live: %s\n", rec->c_str());
-    }
-  }
-  return status;
+  printReport(session, a.inputs.artTimecode);
+  return writeLiveOutputs(a, cli, show, profiles, cueList, session);
 }
 
 }  // namespace haze

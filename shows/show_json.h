@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fixtures/core/result.h"
+#include "fixtures/json_read.h"  // pointerToken, for the places show problems name
 #include "shows/show.h"
 
 namespace haze {
@@ -33,8 +34,6 @@ Result<std::string> readShowBytes(const std::filesystem::path& file);
 std::string showToText(const Show& show);
 // FNV-1a 64 and size of a file's bytes.
 FileStamp stampOf(std::string_view bytes);
-// One JSON pointer reference token ("~" -> "~0", "/" -> "~1").
-std::string pointerToken(std::string_view key);
 // A shutter as the show format writes it: "open", "closed" or {"strobe_hz", "duty"[, "mode"]}.
 nlohmann::ordered_json shutterJson(const Shutter& s);
 // The tidiest decimal double that rounds to f (0.8f -> 0.8, not 0.800000011920929).

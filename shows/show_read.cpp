@@ -8,12 +8,14 @@
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "fixtures/color.h"
 #include "fixtures/core/text_file.h"
+#include "fixtures/json_read.h"
 #include "shows/cue_number.h"
 #include "shows/effects.h"
 #include "shows/palettes.h"
@@ -26,203 +28,27 @@ namespace {
 
 using json = nlohmann::json;
 
-// Any number a show holds fits comfortably here; larger ones are typos or hostile input (and
-// would overflow the floats the model keeps).
-constexpr double kMaxMagnitude = 1e9;
-
 struct TooDeep {};
-
-const char* typeName(const json& j) {
-  switch (j.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::string: return "a string";
-    case json::value_t::array: return "an array";
-    case json::value_t::object: return "an object";
-    case json::value_t::discarded: return "nothing";
-    default: return "a number";
-  }
-}
-
-std::string numberText(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-// Collects problems while walking the document; each read reports what it expected.
-class Reader {
- public:
-  Reader(std::string file, std::vector<Error>& problems) : file_(std::move(file)), problems_(problems) {}
-
-  void problem(const std::string& ptr, std::string message) {
-    problems_.push_back(Error{file_, ptr, std::move(message)});
-  }
-
-  // The member, or null when absent (a problem when required).
-  const json* member(const json& obj, const std::string& ptr, const char* key, bool required) {
-    auto it = obj.find(key);
-    if (it == obj.end()) {
-      if (required) problem(ptr + "/" + key, std::string("missing required key \"") + key + "\"");
-      return nullptr;
-    }
-    return &*it;
-  }
-
-  void onlyKeys(const json& obj, const std::string& ptr, std::initializer_list<const char*> keys) {
-    for (auto it = obj.begin(); it != obj.end(); ++it) {
-      bool known = false;
-      for (const char* k : keys) known = known || it.key() == k;
-      if (known) continue;
-      std::string list;
-      for (const char* k : keys) list += std::string(list.empty() ? "" : ", ") + k;
-      problem(ptr + "/" + pointerToken(it.key()),
-              "unknown key \"" + it.key() + "\"; expected one of: " + list);
-    }
-  }
-
-  bool isObject(const json& j, const std::string& ptr, const char* what) {
-    if (j.is_object()) return true;
-    problem(ptr, std::string("expected ") + what + " (an object), got " + typeName(j));
-    return false;
-  }
-
-  bool isArray(const json& j, const std::string& ptr, const char* what) {
-    if (j.is_array()) return true;
-    problem(ptr, std::string("expected ") + what + " (an array), got " + typeName(j));
-    return false;
-  }
-
-  // A number within [lo, hi] (each bound optional through +-infinity); false (and a problem) when not.
-  bool number(const json& j, const std::string& ptr, double lo, double hi, const char* what, double& out) {
-    if (!j.is_number()) {
-      problem(ptr, std::string("expected ") + what + " (a number), got " + typeName(j));
-      return false;
-    }
-    double v = j.get<double>();
-    if (!std::isfinite(v) || std::fabs(v) > kMaxMagnitude) {
-      problem(ptr, std::string("expected ") + what + ", got a number too large to be meant");
-      return false;
-    }
-    if (v < lo || v > hi) {
-      std::string range;
-      if (std::isfinite(lo) && std::isfinite(hi))
-        range = "from " + numberText(lo) + " to " + numberText(hi);
-      else if (std::isfinite(lo))
-        range = lo == 0 ? "that is not negative" : "of at least " + numberText(lo);
-      else
-        range = "of at most " + numberText(hi);
-      problem(ptr, std::string("expected ") + what + " " + range + ", got " + numberText(v));
-      return false;
-    }
-    out = v;
-    return true;
-  }
-
-  bool numberMember(const json& obj, const std::string& ptr, const char* key, bool required,
-                    double lo, double hi, const char* what, float& out) {
-    const json* j = member(obj, ptr, key, required);
-    double v = 0;
-    if (!j || !number(*j, ptr + "/" + key, lo, hi, what, v)) return false;
-    out = static_cast<float>(v);
-    return true;
-  }
-
-  bool integer(const json& j, const std::string& ptr, long long lo, long long hi, const char* what, int& out) {
-    bool isInt = j.is_number_integer();
-    if (!isInt && j.is_number_float()) {
-      double d = j.get<double>();
-      isInt = std::isfinite(d) && std::floor(d) == d && std::fabs(d) < 1e15;
-    }
-    if (!isInt) {
-      problem(ptr, std::string("expected ") + what + " (a whole number), got " +
-                       (j.is_number() ? "a fraction" : typeName(j)));
-      return false;
-    }
-    long long v = 0;
-    if (j.is_number_unsigned()) {
-      unsigned long long u = j.get<unsigned long long>();
-      v = u > static_cast<unsigned long long>(LLONG_MAX) ? LLONG_MAX : static_cast<long long>(u);
-    } else if (j.is_number_integer()) {
-      v = j.get<long long>();
-    } else {
-      v = static_cast<long long>(j.get<double>());
-    }
-    if (v < lo || v > hi) {
-      problem(ptr, std::string("expected ") + what + " from " + std::to_string(lo) + " to " +
-                       std::to_string(hi) + ", got " + std::to_string(v));
-      return false;
-    }
-    out = static_cast<int>(v);
-    return true;
-  }
-
-  bool string(const json& j, const std::string& ptr, const char* what, std::string& out, bool nonEmpty) {
-    if (!j.is_string()) {
-      problem(ptr, std::string("expected ") + what + " (a string), got " + typeName(j));
-      return false;
-    }
-    if (nonEmpty && j.get_ref<const std::string&>().empty()) {
-      problem(ptr, std::string("expected ") + what + ", got an empty string");
-      return false;
-    }
-    out = j.get<std::string>();
-    return true;
-  }
-
-  bool stringMember(const json& obj, const std::string& ptr, const char* key, bool required,
-                    const char* what, std::string& out, bool nonEmpty) {
-    const json* j = member(obj, ptr, key, required);
-    return j && string(*j, ptr + "/" + key, what, out, nonEmpty);
-  }
-
-  // [x, y, z] with each component in [lo, hi].
-  bool vec3(const json& j, const std::string& ptr, double lo, double hi, const char* what, glm::vec3& out) {
-    if (!j.is_array() || j.size() != 3) {
-      problem(ptr, std::string("expected ") + what + " as an array of 3 numbers, got " +
-                       (j.is_array() ? "an array of " + std::to_string(j.size()) : std::string(typeName(j))));
-      return false;
-    }
-    glm::vec3 v{0.0f};
-    bool ok = true;
-    for (int i = 0; i < 3; ++i) {
-      double c = 0;
-      ok = number(j[static_cast<size_t>(i)], ptr + "/" + std::to_string(i), lo, hi, what, c) && ok;
-      v[i] = static_cast<float>(c);
-    }
-    if (ok) out = v;
-    return ok;
-  }
-
-  bool vec3Member(const json& obj, const std::string& ptr, const char* key, bool required,
-                  double lo, double hi, const char* what, glm::vec3& out) {
-    const json* j = member(obj, ptr, key, required);
-    return j && vec3(*j, ptr + "/" + key, lo, hi, what, out);
-  }
-
-  // A number (grey) or [r, g, b], each not negative.
-  bool greyOrRgb(const json& j, const std::string& ptr, const char* what, glm::vec3& out) {
-    if (j.is_number()) {
-      double v = 0;
-      if (!number(j, ptr, 0.0, kMaxMagnitude, what, v)) return false;
-      out = glm::vec3(static_cast<float>(v));
-      return true;
-    }
-    if (j.is_array()) return vec3(j, ptr, 0.0, kMaxMagnitude, what, out);
-    problem(ptr, std::string("expected ") + what + " as a number or [r, g, b], got " + typeName(j));
-    return false;
-  }
-
- private:
-  std::string file_;
-  std::vector<Error>& problems_;
-};
 
 constexpr double kInf = INFINITY;
 // A wheel spinning 100 turns a second is far past any motor; a bigger number is a typing slip.
 constexpr double kMaxSpinDegS = 36000.0;
 
-void readVenue(Reader& r, const json& root, Show& show) {
+// A number (grey) or [r, g, b], each not negative.
+bool greyOrRgb(JsonProblems& r, const json& j, const std::string& ptr, const char* what, glm::vec3& out) {
+  if (j.is_number()) {
+    double v = 0;
+    if (!r.number(j, ptr, 0.0, kMaxJsonMagnitude, what, v)) return false;
+    out = glm::vec3(static_cast<float>(v));
+    return true;
+  }
+  if (j.is_array()) return r.vec3(j, ptr, 0.0, kMaxJsonMagnitude, what, out);
+  r.problem(ptr, std::string("expected ") + what + " as a number or [r, g, b], got " + jsonKind(j));
+  return false;
+}
+
+
+void readVenue(JsonProblems& r, const json& root, Show& show) {
   const json* v = r.member(root, "", "venue", false);
   if (!v || v->is_null()) return;
   if (!r.isObject(*v, "/venue", "the venue")) return;
@@ -230,7 +56,7 @@ void readVenue(Reader& r, const json& root, Show& show) {
   r.stringMember(*v, "/venue", "gltf", true, "the path of a glTF file", show.venueGltf, true);
 }
 
-void readMvrSource(Reader& r, const json& root, Show& show) {
+void readMvrSource(JsonProblems& r, const json& root, Show& show) {
   const json* v = r.member(root, "", "mvr", false);
   if (!v || v->is_null()) return;
   if (!r.isObject(*v, "/mvr", "the MVR the show came from")) return;
@@ -238,48 +64,69 @@ void readMvrSource(Reader& r, const json& root, Show& show) {
   r.stringMember(*v, "/mvr", "source", true, "the path of an .mvr file", show.mvrSource, true);
 }
 
+// density.grid: cells as a number (each axis) or [x, y, z]; a grid too large to simulate is
+// refused with the memory it would need.
+void readDensityGrid(JsonProblems& r, const json& g, const std::string& gp, DensitySpec& d) {
+  int n[3] = {d.grid[0], d.grid[1], d.grid[2]};
+  bool ok = true;
+  if (g.is_array() && g.size() == 3) {
+    for (size_t k = 0; k < 3; ++k)
+      ok = r.integer(g[k], gp + "/" + std::to_string(k), 1, 1 << 20, "cells along an axis", n[k]) && ok;
+  } else if (g.is_number()) {
+    ok = r.integer(g, gp, 1, 1 << 20, "cells along each axis", n[0]);
+    n[1] = n[2] = n[0];
+  } else {
+    r.problem(gp, "expected the grid's cells as a number or [x, y, z]");
+    ok = false;
+  }
+  if (ok) {
+    const long long cells = static_cast<long long>(n[0]) * n[1] * n[2];
+    const int side = std::max({n[0], n[1], n[2]});
+    if (side > kMaxDensityCellsPerSide || cells > kMaxDensityCells) {
+      r.problem(gp, "a grid of " + std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" + std::to_string(n[2]) +
+                        " cells needs about " + std::to_string(cells * 28 / (1 << 20)) +
+                        " MB to simulate; at most " + std::to_string(kMaxDensityCellsPerSide) + " per side and " +
+                        std::to_string(kMaxDensityCells) + " cells");
+    } else {
+      for (int k = 0; k < 3; ++k) d.grid[k] = n[k];
+    }
+  }
+}
+
+void readHazers(JsonProblems& r, const json& hs, const std::string& p, DensitySpec& d) {
+  for (size_t i = 0; i < hs.size(); ++i) {
+    const std::string hp = p + "/hazers/" + std::to_string(i);
+    const json& h = hs[i];
+    if (!r.isObject(h, hp, "a hazer")) continue;
+    HazerSpec hz;
+    r.onlyKeys(h, hp, {"position", "direction", "output", "spread", "speed"});
+    r.vec3Member(h, hp, "position", true, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a position in metres", hz.positionM);
+    if (r.vec3Member(h, hp, "direction", false, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a direction", hz.direction) &&
+        hz.direction == glm::vec3(0.0f))
+      r.problem(hp + "/direction", "expected a direction, got [0, 0, 0]");
+    r.numberMember(h, hp, "output", false, 0.0, 1e4, "an output in m^3/s of haze at density 1", hz.output);
+    r.numberMember(h, hp, "spread", false, 1.0, 160.0, "the fan's cone angle in degrees", hz.spreadDeg);
+    r.numberMember(h, hp, "speed", false, 0.0, 50.0, "the fan's air speed in m/s", hz.speedMps);
+    d.hazers.push_back(hz);
+  }
+}
+
 // atmosphere.density (docs/shows.md, "Density"). A grid too large to simulate is refused here,
 // with what it would need; hazers outside the venue are clamped when the field is made (the
 // venue's bounds are not known here).
-void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) {
+void readDensity(JsonProblems& r, const json& j, const std::string& p, AtmosphereDef& at) {
   if (!r.isObject(j, p, "the density field")) return;
   DensitySpec d;
   r.onlyKeys(j, p, {"base", "grid", "bounds", "air_flow", "mixing", "dissipation", "warmup", "still", "fog", "boxes",
                     "hazers"});
   r.numberMember(j, p, "base", false, 0.0, 1e6, "a density (1 = the atmosphere's own)", d.base);
-  if (const json* g = r.member(j, p, "grid", false)) {
-    const std::string gp = p + "/grid";
-    int n[3] = {d.grid[0], d.grid[1], d.grid[2]};
-    bool ok = true;
-    if (g->is_array() && g->size() == 3) {
-      for (size_t k = 0; k < 3; ++k)
-        ok = r.integer((*g)[k], gp + "/" + std::to_string(k), 1, 1 << 20, "cells along an axis", n[k]) && ok;
-    } else if (g->is_number()) {
-      ok = r.integer(*g, gp, 1, 1 << 20, "cells along each axis", n[0]);
-      n[1] = n[2] = n[0];
-    } else {
-      r.problem(gp, "expected the grid's cells as a number or [x, y, z]");
-      ok = false;
-    }
-    if (ok) {
-      const long long cells = static_cast<long long>(n[0]) * n[1] * n[2];
-      const int side = std::max({n[0], n[1], n[2]});
-      if (side > kMaxDensityCellsPerSide || cells > kMaxDensityCells) {
-        r.problem(gp, "a grid of " + std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" + std::to_string(n[2]) +
-                          " cells needs about " + std::to_string(cells * 28 / (1 << 20)) +
-                          " MB to simulate; at most " + std::to_string(kMaxDensityCellsPerSide) + " per side and " +
-                          std::to_string(kMaxDensityCells) + " cells");
-      } else {
-        for (int k = 0; k < 3; ++k) d.grid[k] = n[k];
-      }
-    }
-  }
+  if (const json* g = r.member(j, p, "grid", false)) readDensityGrid(r, *g, p + "/grid", d);
   if (const json* b = r.member(j, p, "bounds", false)) {
     glm::vec3 lo{0.0f}, hi{0.0f};
     if (!b->is_array() || b->size() != 2) {
       r.problem(p + "/bounds", "expected the grid's box as [[x, y, z], [x, y, z]] (its two corners)");
-    } else if (r.vec3((*b)[0], p + "/bounds/0", -kMaxMagnitude, kMaxMagnitude, "a corner in metres", lo) &&
-               r.vec3((*b)[1], p + "/bounds/1", -kMaxMagnitude, kMaxMagnitude, "a corner in metres", hi)) {
+    } else if (r.vec3((*b)[0], p + "/bounds/0", -kMaxJsonMagnitude, kMaxJsonMagnitude, "a corner in metres", lo) &&
+               r.vec3((*b)[1], p + "/bounds/1", -kMaxJsonMagnitude, kMaxJsonMagnitude, "a corner in metres", hi)) {
       if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
         r.problem(p + "/bounds", "the second corner must be above the first on every axis");
       d.boundsMinM = lo;
@@ -295,7 +142,7 @@ void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& 
     if (s->is_boolean())
       d.still = s->get<bool>();
     else
-      r.problem(p + "/still", std::string("expected true or false, got ") + typeName(*s));
+      r.problem(p + "/still", std::string("expected true or false, got ") + jsonKind(*s));
   }
   if (const json* f = r.member(j, p, "fog", false); f && r.isObject(*f, p + "/fog", "the ground fog")) {
     FogLayerSpec fog;
@@ -312,33 +159,18 @@ void readDensity(Reader& r, const json& j, const std::string& p, AtmosphereDef& 
       if (!r.isObject(b, bp, "a density box")) continue;
       DensityBoxSpec box;
       r.onlyKeys(b, bp, {"min", "max", "density"});
-      r.vec3Member(b, bp, "min", true, -kMaxMagnitude, kMaxMagnitude, "a corner in metres", box.minM);
-      r.vec3Member(b, bp, "max", true, -kMaxMagnitude, kMaxMagnitude, "a corner in metres", box.maxM);
+      r.vec3Member(b, bp, "min", true, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a corner in metres", box.minM);
+      r.vec3Member(b, bp, "max", true, -kMaxJsonMagnitude, kMaxJsonMagnitude, "a corner in metres", box.maxM);
       r.numberMember(b, bp, "density", true, 0.0, 1e6, "the box's density", box.density);
       d.boxes.push_back(box);
     }
   }
-  if (const json* hs = r.member(j, p, "hazers", false); hs && r.isArray(*hs, p + "/hazers", "the hazers")) {
-    for (size_t i = 0; i < hs->size(); ++i) {
-      const std::string hp = p + "/hazers/" + std::to_string(i);
-      const json& h = (*hs)[i];
-      if (!r.isObject(h, hp, "a hazer")) continue;
-      HazerSpec hz;
-      r.onlyKeys(h, hp, {"position", "direction", "output", "spread", "speed"});
-      r.vec3Member(h, hp, "position", true, -kMaxMagnitude, kMaxMagnitude, "a position in metres", hz.positionM);
-      if (r.vec3Member(h, hp, "direction", false, -kMaxMagnitude, kMaxMagnitude, "a direction", hz.direction) &&
-          hz.direction == glm::vec3(0.0f))
-        r.problem(hp + "/direction", "expected a direction, got [0, 0, 0]");
-      r.numberMember(h, hp, "output", false, 0.0, 1e4, "an output in m^3/s of haze at density 1", hz.output);
-      r.numberMember(h, hp, "spread", false, 1.0, 160.0, "the fan's cone angle in degrees", hz.spreadDeg);
-      r.numberMember(h, hp, "speed", false, 0.0, 50.0, "the fan's air speed in m/s", hz.speedMps);
-      d.hazers.push_back(hz);
-    }
-  }
+  if (const json* hs = r.member(j, p, "hazers", false); hs && r.isArray(*hs, p + "/hazers", "the hazers"))
+    readHazers(r, *hs, p, d);
   at.density = d;
 }
 
-void readSun(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) {
+void readSun(JsonProblems& r, const json& j, const std::string& p, AtmosphereDef& at) {
   if (!r.isObject(j, p, "the sun")) return;
   r.onlyKeys(j, p, {"enabled", "azimuth", "elevation", "illuminance_lux", "color"});
   SunDef sun;
@@ -346,18 +178,18 @@ void readSun(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) 
     if (e->is_boolean())
       sun.enabled = e->get<bool>();
     else
-      r.problem(p + "/enabled", std::string("expected true or false, got ") + typeName(*e));
+      r.problem(p + "/enabled", std::string("expected true or false, got ") + jsonKind(*e));
   }
   r.numberMember(j, p, "azimuth", false, -360.0, 360.0, "an azimuth in degrees from north (-Z) towards east (+X)",
                  sun.azimuthDeg);
   r.numberMember(j, p, "elevation", false, -90.0, 90.0, "an elevation in degrees above the horizon", sun.elevationDeg);
   r.numberMember(j, p, "illuminance_lux", false, 0.0, 1e6, "an illuminance in lux", sun.illuminanceLux);
-  if (const json* c = r.member(j, p, "color", false)) r.greyOrRgb(*c, p + "/color", "the sun's colour", sun.color);
+  if (const json* c = r.member(j, p, "color", false)) greyOrRgb(r, *c, p + "/color", "the sun's colour", sun.color);
   at.sun = sun;
 }
 
 // atmosphere.particles (docs/shows.md, "Particles").
-void readParticles(Reader& r, const json& j, const std::string& p, AtmosphereDef& at) {
+void readParticles(JsonProblems& r, const json& j, const std::string& p, AtmosphereDef& at) {
   if (!r.isObject(j, p, "the particles")) return;
   r.onlyKeys(j, p, {"enabled", "density", "size_um", "size_sigma", "brightness", "seed"});
   ParticleSettings ps;
@@ -365,7 +197,7 @@ void readParticles(Reader& r, const json& j, const std::string& p, AtmosphereDef
     if (e->is_boolean())
       ps.enabled = e->get<bool>();
     else
-      r.problem(p + "/enabled", std::string("expected true or false, got ") + typeName(*e));
+      r.problem(p + "/enabled", std::string("expected true or false, got ") + jsonKind(*e));
   }
   r.numberMember(j, p, "density", false, 0.0, kMaxParticleDensityPerM3, "particles per m^3", ps.densityPerM3);
   r.numberMember(j, p, "size_um", false, 1.0, 1000.0, "a median diameter in micrometres", ps.sizeUm);
@@ -378,7 +210,7 @@ void readParticles(Reader& r, const json& j, const std::string& p, AtmosphereDef
   at.particles = ps;
 }
 
-void readAtmosphere(Reader& r, const json& root, Show& show) {
+void readAtmosphere(JsonProblems& r, const json& root, Show& show) {
   const json* a = r.member(root, "", "atmosphere", false);
   if (!a || !r.isObject(*a, "/atmosphere", "the atmosphere")) return;
   const std::string p = "/atmosphere";
@@ -394,9 +226,9 @@ void readAtmosphere(Reader& r, const json& root, Show& show) {
       r.problem(p + "/phase", "unknown phase function \"" + phase + "\"; expected hazy, isotropic or hg");
   }
   r.numberMember(*a, p, "g", false, -0.99, 0.99, "the Henyey-Greenstein g", at.g);
-  if (const json* j = r.member(*a, p, "ambient", false)) r.greyOrRgb(*j, p + "/ambient", "the ambient light", at.ambient);
+  if (const json* j = r.member(*a, p, "ambient", false)) greyOrRgb(r, *j, p + "/ambient", "the ambient light", at.ambient);
   if (const json* j = r.member(*a, p, "background", false))
-    r.greyOrRgb(*j, p + "/background", "the background radiance", at.background);
+    greyOrRgb(r, *j, p + "/background", "the background radiance", at.background);
   if (const json* j = r.member(*a, p, "density", false)) readDensity(r, *j, p + "/density", at);
   std::string shadows;
   if (r.stringMember(*a, p, "shadows", false, "a shadow kind", shadows, true)) {
@@ -409,7 +241,7 @@ void readAtmosphere(Reader& r, const json& root, Show& show) {
   if (const json* j = r.member(*a, p, "particles", false)) readParticles(r, *j, p + "/particles", at);
 }
 
-void readCameras(Reader& r, const json& root, Show& show) {
+void readCameras(JsonProblems& r, const json& root, Show& show) {
   const json* cams = r.member(root, "", "cameras", false);
   if (!cams || !r.isArray(*cams, "/cameras", "the camera list")) return;
   for (size_t i = 0; i < cams->size(); ++i) {
@@ -449,7 +281,7 @@ void readCameras(Reader& r, const json& root, Show& show) {
   }
 }
 
-void readProfiles(Reader& r, const json& root, Show& show) {
+void readProfiles(JsonProblems& r, const json& root, Show& show) {
   const json* profs = r.member(root, "", "profiles", true);
   if (!profs || !r.isObject(*profs, "/profiles", "profiles by name")) return;
   for (auto it = profs->begin(); it != profs->end(); ++it) {
@@ -472,14 +304,14 @@ void readProfiles(Reader& r, const json& root, Show& show) {
       }
     } else {
       r.problem(p, std::string("expected the path of a profile file (a string) or an inline profile "
-                               "(an object), got ") + typeName(*it));
+                               "(an object), got ") + jsonKind(*it));
       continue;
     }
     show.profiles[it.key()] = std::move(ref);
   }
 }
 
-void readFixtures(Reader& r, const json& root, Show& show) {
+void readFixtures(JsonProblems& r, const json& root, Show& show) {
   const json* fix = r.member(root, "", "fixtures", true);
   if (!fix || !r.isArray(*fix, "/fixtures", "the fixture list")) return;
   for (size_t i = 0; i < fix->size(); ++i) {
@@ -521,7 +353,7 @@ void readFixtures(Reader& r, const json& root, Show& show) {
   }
 }
 
-bool readFixtureKey(Reader& r, const std::string& key, const std::string& p, int& id) {
+bool readFixtureKey(JsonProblems& r, const std::string& key, const std::string& p, int& id) {
   long long v = 0;
   auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), v);
   bool canonical = !key.empty() && key[0] != '0' && ec == std::errc() && end == key.data() + key.size();
@@ -544,7 +376,7 @@ int countedKey(const std::string& key) {
 }
 
 // "cells": {"1": {"intensity", "color"}, ...}: cells counted from 1 (docs/cells.md).
-void readCellValues(Reader& r, const json& cells, const std::string& cp, CueValues& v) {
+void readCellValues(JsonProblems& r, const json& cells, const std::string& cp, CueValues& v) {
   if (!r.isObject(cells, cp, "values by cell number")) return;
   for (auto it = cells.begin(); it != cells.end(); ++it) {
     const std::string p = cp + "/" + pointerToken(it.key());
@@ -567,7 +399,7 @@ void readCellValues(Reader& r, const json& cells, const std::string& cp, CueValu
 }
 
 // frost, focus, prism, prism_rotation, blades, blade_rotation, shutter (docs/show-format.md).
-void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues& v) {
+void readOpticsValues(JsonProblems& r, const json& a, const std::string& p, CueValues& v) {
   double x = 0;
   if (const json* j = r.member(a, p, "frost", false))
     if (r.number(*j, p + "/frost", 0.0, 1.0, "a frost (0..1)", x)) v.frost = static_cast<float>(x);
@@ -583,7 +415,7 @@ void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues&
     const std::string bp = p + "/blades";
     if (!j->is_array() || j->size() != 4) {
       r.problem(bp, std::string("expected four [a, b] pairs (one per blade), got ") +
-                        (j->is_array() ? "an array of " + std::to_string(j->size()) : std::string(typeName(*j))));
+                        (j->is_array() ? "an array of " + std::to_string(j->size()) : std::string(jsonKind(*j))));
     } else {
       BladeInsertions blades{};
       bool ok = true;
@@ -592,7 +424,7 @@ void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues&
         const std::string ep = bp + "/" + std::to_string(k);
         if (!e.is_array() || e.size() != 2) {
           r.problem(ep, std::string("expected the insertions of the blade's two ends, [a, b], got ") +
-                            (e.is_array() ? "an array of " + std::to_string(e.size()) : std::string(typeName(e))));
+                            (e.is_array() ? "an array of " + std::to_string(e.size()) : std::string(jsonKind(e))));
           ok = false;
           continue;
         }
@@ -642,7 +474,7 @@ void readOpticsValues(Reader& r, const json& a, const std::string& p, CueValues&
 }
 
 // "palettes": {"position": "Centre", "color": "Red", ...}: one palette name per kind.
-void readPaletteRefs(Reader& r, const json& j, const std::string& p, PaletteRefs& refs) {
+void readPaletteRefs(JsonProblems& r, const json& j, const std::string& p, PaletteRefs& refs) {
   if (!r.isObject(j, p, "palette names by kind")) return;
   r.onlyKeys(j, p, {"all", "position", "color", "beam"});
   r.stringMember(j, p, "all", false, "the name of an \"all\" palette", refs.all, true);
@@ -653,7 +485,7 @@ void readPaletteRefs(Reader& r, const json& j, const std::string& p, PaletteRefs
 
 // One fixture's (or group's) attribute values; `palettes` only where references are allowed
 // (cues: yes; palettes themselves: no, so references cannot form a cycle).
-void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValues& v, bool allowPalettes) {
+void readAttributeValues(JsonProblems& r, const json& a, const std::string& p, CueValues& v, bool allowPalettes) {
   if (allowPalettes)
     r.onlyKeys(a, p, {"intensity", "pan", "tilt", "color", "zoom", "gobo", "gobo_rotation", "gobo2", "gobo2_rotation",
                       "color2", "cto",
@@ -698,7 +530,7 @@ void readAttributeValues(Reader& r, const json& a, const std::string& p, CueValu
 }
 
 // Values keyed by fixture id, as cues and palettes hold them.
-void readFixtureValues(Reader& r, const json& vals, const std::string& vp, std::map<int, CueValues>& out,
+void readFixtureValues(JsonProblems& r, const json& vals, const std::string& vp, std::map<int, CueValues>& out,
                        bool allowPalettes) {
   if (!r.isObject(vals, vp, "values by fixture id")) return;
   for (auto it = vals.begin(); it != vals.end(); ++it) {
@@ -712,7 +544,7 @@ void readFixtureValues(Reader& r, const json& vals, const std::string& vp, std::
   }
 }
 
-void readGroups(Reader& r, const json& root, Show& show) {
+void readGroups(JsonProblems& r, const json& root, Show& show) {
   const json* groups = r.member(root, "", "groups", false);
   if (!groups || !r.isArray(*groups, "/groups", "the groups")) return;
   for (size_t i = 0; i < groups->size(); ++i) {
@@ -733,7 +565,7 @@ void readGroups(Reader& r, const json& root, Show& show) {
   }
 }
 
-void readPalettes(Reader& r, const json& root, Show& show) {
+void readPalettes(JsonProblems& r, const json& root, Show& show) {
   const json* pals = r.member(root, "", "palettes", false);
   if (!pals || !r.isArray(*pals, "/palettes", "the palettes")) return;
   for (size_t i = 0; i < pals->size(); ++i) {
@@ -766,7 +598,7 @@ void readPalettes(Reader& r, const json& root, Show& show) {
 
 // "timing": {"up", "down", "position", "color", "beam": {"delay", "fade"}, "fan": {"group",
 // "delay", "fade"}, "curve": "linear" | "s-curve"} (docs/show-format.md, "Timing").
-void readTiming(Reader& r, const json& j, const std::string& p, CueTimingDef& t) {
+void readTiming(JsonProblems& r, const json& j, const std::string& p, CueTimingDef& t) {
   if (!r.isObject(j, p, "the cue's timing")) return;
   r.onlyKeys(j, p, {"up", "down", "position", "color", "beam", "fan", "curve"});
   double x = 0;
@@ -814,7 +646,7 @@ constexpr size_t kMaxEffectColors = 64;
 // "effects": [{"shape", "attribute", "group", "rate", "size", "phase", "spread", "seed", "colors"}]
 // "hazers": {"1": {"output", "fan"}}: hazers of atmosphere.density counted from 1 (docs/shows.md,
 // "Hazers in cues"); the atmosphere is read before the cue lists.
-void readHazerLevels(Reader& r, const json& j, const std::string& hp, const Show& show, std::map<int, HazerCueDef>& out) {
+void readHazerLevels(JsonProblems& r, const json& j, const std::string& hp, const Show& show, std::map<int, HazerCueDef>& out) {
   if (!r.isObject(j, hp, "hazer levels by hazer number")) return;
   const size_t count = show.atmosphere.density ? show.atmosphere.density->hazers.size() : 0;
   for (auto it = j.begin(); it != j.end(); ++it) {
@@ -842,7 +674,7 @@ void readHazerLevels(Reader& r, const json& j, const std::string& hp, const Show
   }
 }
 
-void readEffects(Reader& r, const json& j, const std::string& ep, std::vector<EffectDef>& out) {
+void readEffects(JsonProblems& r, const json& j, const std::string& ep, std::vector<EffectDef>& out) {
   if (!r.isArray(j, ep, "the cue's effects")) return;
   for (size_t i = 0; i < j.size(); ++i) {
     const json& e = j[i];
@@ -917,7 +749,7 @@ void readEffects(Reader& r, const json& j, const std::string& ep, std::vector<Ef
   }
 }
 
-void readCueLists(Reader& r, const json& root, Show& show) {
+void readCueLists(JsonProblems& r, const json& root, Show& show) {
   const json* lists = r.member(root, "", "cue_lists", false);
   if (!lists || !r.isArray(*lists, "/cue_lists", "the cue lists")) return;
   for (size_t li = 0; li < lists->size(); ++li) {
@@ -953,7 +785,7 @@ void readCueLists(Reader& r, const json& root, Show& show) {
                 if (r.number(*j, p + "/follow", 0.0, kInf, "a follow time in seconds", t)) cue.followS = t;
               } else {
                 r.problem(p + "/follow", std::string("expected a follow time in seconds (a number) or null, got ") +
-                                             typeName(*j));
+                                             jsonKind(*j));
               }
             }
             if (r.stringMember(c, p, "timecode", false, "a timecode \"hh:mm:ss:ff\"", cue.timecode, false) &&
@@ -984,20 +816,64 @@ bool migrate(json& root, int version) {
   return true;
 }
 
-}  // namespace
-
-std::string pointerToken(std::string_view key) {
-  std::string out;
-  for (char c : key) {
-    if (c == '~')
-      out += "~0";
-    else if (c == '/')
-      out += "~1";
-    else
-      out += c;
+// The text as JSON, nesting limited; nullopt (and the problem) when it is not.
+std::optional<json> parseShowJson(std::string_view text, JsonProblems& r) {
+  try {
+    json::parser_callback_t limitDepth = [](int depth, json::parse_event_t, json&) {
+      if (depth > kMaxShowJsonDepth) throw TooDeep{};
+      return true;
+    };
+    return json::parse(text.begin(), text.end(), limitDepth);
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();
+    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error ..."
+    auto colon = what.find(": ");
+    if (colon != std::string::npos) what = what.substr(colon + 2);
+    r.problem(parseErrorPlace(text, e.byte), "the show is not valid JSON: " + what);
+  } catch (const TooDeep&) {
+    r.problem("", "the show nests JSON deeper than " + std::to_string(kMaxShowJsonDepth) +
+                      " levels; a show needs a handful");
+  } catch (const std::exception& e) {
+    r.problem("", std::string("the show cannot be read as JSON: ") + e.what());
   }
-  return out;
+  return std::nullopt;
 }
+
+// "version", migrated to the newest; 0 (and the problem) when the show cannot be read on.
+int readVersion(JsonProblems& r, json& root) {
+  int version = 0;
+  const json* v = r.member(root, "", "version", true);
+  if (!v || !r.integer(*v, "/version", 1, INT_MAX, "a format version", version)) return 0;
+  if (version > kShowFormatVersion) {
+    r.problem("/version", "this show has format version " + std::to_string(version) +
+                              ", newer than this haze reads (up to " + std::to_string(kShowFormatVersion) +
+                              "); open it with a newer haze");
+    return 0;
+  }
+  if (!migrate(root, version)) {
+    r.problem("/version", "unknown format version " + std::to_string(version) + "; expected " +
+                              std::to_string(kShowFormatVersion));
+    return 0;
+  }
+  return version;
+}
+
+// Cue parts that format version 1 does not have, each a problem in a version-1 file.
+void refuseVersion2Cues(JsonProblems& r, const Show& show, int version) {
+  if (version >= 2) return;
+  for (size_t l = 0; l < show.cueLists.size(); ++l)
+    for (size_t c = 0; c < show.cueLists[l].cues.size(); ++c) {
+      const Cue& cue = show.cueLists[l].cues[c];
+      const std::string p = "/cue_lists/" + std::to_string(l) + "/cues/" + std::to_string(c);
+      const std::string need = " needs format version 2; this file says " + std::to_string(version) +
+                               " (set \"version\": 2)";
+      if (!cue.timing.empty()) r.problem(p + "/timing", "\"timing\"" + need);
+      if (!cue.effects.empty()) r.problem(p + "/effects", "\"effects\"" + need);
+      if (!cue.hazers.empty()) r.problem(p + "/hazers", "\"hazers\"" + need);
+    }
+}
+
+}  // namespace
 
 FileStamp stampOf(std::string_view bytes) {
   std::uint64_t h = 1469598103934665603ull;
@@ -1033,33 +909,14 @@ Result<std::string> readShowBytes(const std::filesystem::path& file) {
 ShowParse parseShowText(std::string_view text, const std::filesystem::path& file) {
   ShowParse out;
   out.show.file = file;
-  Reader r(file.string(), out.problems);
-  json root;
-  try {
-    json::parser_callback_t limitDepth = [](int depth, json::parse_event_t, json&) {
-      if (depth > kMaxShowJsonDepth) throw TooDeep{};
-      return true;
-    };
-    root = json::parse(text.begin(), text.end(), limitDepth);
-  } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error ..."
-    auto colon = what.find(": ");
-    if (colon != std::string::npos) what = what.substr(colon + 2);
-    r.problem(parseErrorPlace(text, e.byte), "the show is not valid JSON: " + what);
-    return out;
-  } catch (const TooDeep&) {
-    r.problem("", "the show nests JSON deeper than " + std::to_string(kMaxShowJsonDepth) +
-                      " levels; a show needs a handful");
-    return out;
-  } catch (const std::exception& e) {
-    r.problem("", std::string("the show cannot be read as JSON: ") + e.what());
-    return out;
-  }
+  JsonProblems r(file.string(), out.problems);
+  std::optional<json> parsed = parseShowJson(text, r);
+  if (!parsed) return out;
+  json& root = *parsed;
 
   try {
     if (!root.is_object()) {
-      r.problem("", std::string("expected a show (a JSON object), got ") + typeName(root));
+      r.problem("", std::string("expected a show (a JSON object), got ") + jsonKind(root));
       return out;
     }
     std::string format;
@@ -1069,23 +926,8 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
                                "\"" + (format == "haze-fixture" ? " (this is a fixture profile, not a show)" : ""));
       return out;
     }
-    int version = 0;
-    if (const json* v = r.member(root, "", "version", true)) {
-      if (!r.integer(*v, "/version", 1, INT_MAX, "a format version", version)) return out;
-      if (version > kShowFormatVersion) {
-        r.problem("/version", "this show has format version " + std::to_string(version) +
-                                  ", newer than this haze reads (up to " + std::to_string(kShowFormatVersion) +
-                                  "); open it with a newer haze");
-        return out;
-      }
-      if (!migrate(root, version)) {
-        r.problem("/version", "unknown format version " + std::to_string(version) + "; expected " +
-                                  std::to_string(kShowFormatVersion));
-        return out;
-      }
-    } else {
-      return out;
-    }
+    const int version = readVersion(r, root);
+    if (version == 0) return out;
     out.show.fileVersion = version;
     if (version < 2)
       for (const char* key : {"groups", "palettes"})
@@ -1105,17 +947,7 @@ ShowParse parseShowText(std::string_view text, const std::filesystem::path& file
     readGroups(r, root, out.show);
     readPalettes(r, root, out.show);
     readCueLists(r, root, out.show);
-    if (version < 2)
-      for (size_t l = 0; l < out.show.cueLists.size(); ++l)
-        for (size_t c = 0; c < out.show.cueLists[l].cues.size(); ++c) {
-          const Cue& cue = out.show.cueLists[l].cues[c];
-          const std::string p = "/cue_lists/" + std::to_string(l) + "/cues/" + std::to_string(c);
-          const std::string need = " needs format version 2; this file says " + std::to_string(version) +
-                                   " (set \"version\": 2)";
-          if (!cue.timing.empty()) r.problem(p + "/timing", "\"timing\"" + need);
-          if (!cue.effects.empty()) r.problem(p + "/effects", "\"effects\"" + need);
-          if (!cue.hazers.empty()) r.problem(p + "/hazers", "\"hazers\"" + need);
-        }
+    refuseVersion2Cues(r, out.show, version);
   } catch (const std::exception& e) {
     // Every access above checks types first; this is a last guard so nothing escapes the library.
     r.problem("", std::string("the show cannot be read: ") + e.what());

@@ -45,7 +45,7 @@ struct GLFWwindow;
 
 namespace haze {
 
-class LiveReceiver;
+class LiveSession;
 
 struct Orbit {
   glm::vec3 target{0.0f, 2.0f, 0.0f};
@@ -80,7 +80,7 @@ struct Gui {
   // The show's density field as a still at GO (docs/shows.md, "Density"): the viewport
   // accumulates still frames, so the haze is not drifted in the window.
   AtmosphereField atmosphere;
-  std::unique_ptr<LiveReceiver> live;  // DMX from a console drives the rig instead of the cues
+  std::unique_ptr<LiveSession> live;  // DMX from a console drives the rig instead of the cues
   std::string liveBind;
   Layout layout;
   double nowS = 0.0;

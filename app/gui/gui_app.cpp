@@ -26,7 +26,7 @@
 #include "shows/hazer_levels.h"
 #include "shows/edit/recent_files.h"
 #include "app/render_session.h"
-#include "shows/dmx/udp_receiver.h"
+#include "shows/frame/live_session.h"
 #include "app/gui/window_context.h"
 #include "renderer/gl/gl.h"
 #include "renderer/renderer.h"
@@ -168,13 +168,16 @@ Status applyOptions(Gui& gui, const Options& opt) {
   gui.recent = loadRecentFiles(recentFilesPath());
   loadViewSettings(gui, opt.quality.has_value(), opt.exposureMode.has_value());
   if (opt.artNet || opt.sacn) {
-    LiveOptions lo;
-    lo.udp.bindAddress = opt.bind;
-    lo.udp.artNet = opt.artNet;
-    lo.udp.sacn = opt.sacn;
-    auto r = LiveReceiver::open(gui.doc->show(), gui.doc->profiles(), lo);
-    if (!r) return r.error();
-    gui.live = std::move(*r);
+    // The same session as `haze live`, DMX only; the GUI follows the heads itself (cues and
+    // DMX alike), and says nothing on stderr.
+    LiveInputs in;
+    in.dmx.udp.bindAddress = opt.bind;
+    in.dmx.udp.artNet = opt.artNet;
+    in.dmx.udp.sacn = opt.sacn;
+    auto session = std::make_unique<LiveSession>(gui.doc->show(), gui.doc->profiles(),
+                                                 LiveSessionConfig{.followHeads = false}, nullptr);
+    if (Status s = session->listen(in); !s) return s.error();
+    gui.live = std::move(session);
     gui.liveBind = opt.bind;
   }
   return Ok{};
@@ -208,8 +211,8 @@ void followHeads(Gui& gui) {
     gui.headsDoc = gui.doc.get();
   }
   // Live, the heads start where the first DMX puts them (as `haze live`), once per receiver.
-  static const LiveReceiver* seededFor = nullptr;
-  if (gui.live && gui.live.get() != seededFor && gui.live->stats().good > 0) {
+  static const LiveSession* seededFor = nullptr;
+  if (gui.live && gui.live.get() != seededFor && gui.live->dmxArrived()) {
     gui.heads->reset(gui.stage, gui.nowS);
     seededFor = gui.live.get();
   }
@@ -328,7 +331,7 @@ void drawPanels(Gui& gui, int winW, int winH) {
   if (!ImGui::IsAnyItemActive()) gui.mergeItem = 0;  // the next widget edit starts a new undo step
   gui.layout = layoutFor(static_cast<float>(winW), static_cast<float>(winH), ImGui::GetFrameHeight(),
                          showPanelWidth(gui, static_cast<float>(winW)));
-  gui.stage = gui.live ? gui.live->poll(0) : gui.doc->stageState(gui.nowS);
+  gui.stage = gui.live ? gui.live->pass(0) : gui.doc->stageState(gui.nowS);
   followHeads(gui);
 
   handleShortcuts(gui);

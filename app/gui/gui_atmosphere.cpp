@@ -14,7 +14,7 @@
 #include <glm/common.hpp>
 
 #include "app/gui/gui.h"
-#include "shows/dmx/udp_receiver.h"
+#include "shows/frame/live_session.h"
 
 namespace haze {
 
@@ -306,14 +306,14 @@ void drawAtmosphereTab(Gui& gui) {
 
   if (gui.live) {
     ImGui::Separator();
-    ImGui::Text("Live DMX on %s: %.0f packets/s", gui.liveBind.c_str(), gui.live->packetRate());
-    const auto sources = gui.live->sources();
+    ImGui::Text("Live DMX on %s: %.0f packets/s", gui.liveBind.c_str(), gui.live->receiver().packetRate());
+    const auto sources = gui.live->receiver().sources();
     if (sources.empty()) ImGui::TextUnformatted("no source: holding the last levels");
     for (const DmxSourceInfo& src : sources)
       ImGui::Text("%s %s  universe %d  priority %d%s", src.winning ? "*" : " ", src.name.c_str(), src.universe,
                   src.priority, src.perSlotPriority ? " (per slot)" : "");
     // Sources that announce themselves (sACN universe discovery), sending to haze or not.
-    for (const DiscoveredSource& d : gui.live->input().discovered()) {
+    for (const DiscoveredSource& d : gui.live->receiver().input().discovered()) {
       std::string list;
       int shown = 0;
       for (int u : d.universes) {

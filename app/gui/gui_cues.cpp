@@ -6,7 +6,7 @@
 #include <set>
 
 #include "app/gui/gui.h"
-#include "shows/dmx/udp_receiver.h"
+#include "shows/frame/live_session.h"
 
 namespace haze {
 
@@ -37,12 +37,12 @@ void recordDmxLook(Gui& gui) {
   }
   // As `haze live --record-cue`: only fixtures DMX drove, so a universe the console does not
   // send cannot wipe the tracked look; the commanded state, not where the heads have got to.
-  const std::set<int> fixtures = gui.live->input().dmxFixtures();
+  const std::set<int> fixtures = gui.live->receiver().input().dmxFixtures();
   if (fixtures.empty()) {
     gui.say("no fixture has received DMX yet: nothing recorded", true);
     return;
   }
-  const StageState& stage = gui.live->poll(0);
+  const StageState& stage = gui.live->pass(0);
   std::map<int, CueValues> look;
   for (int id : fixtures)
     if (auto it = stage.find(id); it != stage.end()) look[id] = cueValuesOf(it->second);

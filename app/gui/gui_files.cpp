@@ -10,7 +10,7 @@
 
 #include "app/gui/gui.h"
 #include "shows/edit/recent_files.h"
-#include "shows/dmx/udp_receiver.h"
+#include "shows/frame/live_session.h"
 #include "shows/import/mvr_export.h"
 #include "shows/import/mvr_import.h"
 

@@ -106,4 +106,16 @@ inline Cue intensityCue(const char* number, float intensity, double fadeS = 0.0,
   return c;
 }
 
+// makeTestShow with cue list "Main": cues 1-3 set fixture 101 to 0.2, 0.4, 0.6 at timecodes
+// 00:00:01:00 to 00:00:03:00 (fades of 0), cue 4 to 0.8 with no timecode.
+inline TestShow timedShow() {
+  TestShow t = makeTestShow();
+  CueList l;
+  l.name = "Main";
+  l.cues = {intensityCue("1", 0.2f, 0.0, "00:00:01:00"), intensityCue("2", 0.4f, 0.0, "00:00:02:00"),
+            intensityCue("3", 0.6f, 0.0, "00:00:03:00"), intensityCue("4", 0.8f)};
+  t.show.cueLists.push_back(l);
+  return t;
+}
+
 }  // namespace haze::test

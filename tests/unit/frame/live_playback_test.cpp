@@ -9,15 +9,7 @@
 namespace haze {
 namespace {
 
-test::TestShow timedShow() {
-  test::TestShow t = test::makeTestShow();
-  CueList l;
-  l.name = "Main";
-  l.cues = {test::intensityCue("1", 0.2f, 0.0, "00:00:01:00"), test::intensityCue("2", 0.4f, 0.0, "00:00:02:00"),
-            test::intensityCue("3", 0.6f, 0.0, "00:00:03:00"), test::intensityCue("4", 0.8f)};
-  t.show.cueLists.push_back(l);
-  return t;
-}
+using test::timedShow;
 
 float intensity(LivePlayback& p, double now) { return p.stage(now, {}, {}).at(101).intensity; }
 
