@@ -192,7 +192,8 @@ void XchangeService::Impl::watchShow(double now) {
   stampChangedAt = now;
 }
 
-// Into a folder of its own first, then moved into DIR: a failed import leaves nothing in DIR.
+// Into a folder of its own inside DIR first (so the moves are renames on one file system), then
+// moved into DIR: a failed import leaves nothing in DIR.
 void XchangeService::Impl::importFile(ReceivedFile&& f) {
   if (acceptDir.empty()) return;
   const fs::path mvr = work / ("received-" + f.commit.fileUuid + ".mvr");
@@ -200,7 +201,7 @@ void XchangeService::Impl::importFile(ReceivedFile&& f) {
       !s)
     return say(s.error().str());
   const fs::path target = freeShowName(acceptDir, f.commit);
-  const fs::path stage = work / ("import-" + f.commit.fileUuid);
+  const fs::path stage = acceptDir / (".haze-xchange-import-" + f.commit.fileUuid);
   std::error_code ec;
   fs::remove_all(stage, ec);
   fs::create_directories(stage, ec);
@@ -212,8 +213,12 @@ void XchangeService::Impl::importFile(ReceivedFile&& f) {
   }
   for (const auto& e : fs::directory_iterator(stage, ec)) {
     fs::rename(e.path(), acceptDir / e.path().filename(), ec);
-    if (ec) return say("file " + f.commit.fileUuid + ": moving " + e.path().filename().string() + " into " + acceptDir.string() +
-                       " failed: " + ec.message());
+    if (ec) {
+      std::error_code ignored;
+      fs::remove_all(stage, ignored);
+      return say("file " + f.commit.fileUuid + ": moving " + e.path().filename().string() + " into " +
+                 acceptDir.string() + " failed: " + ec.message());
+    }
   }
   fs::remove_all(stage, ec);
   say("imported file " + f.commit.fileUuid + " as " + target.string() + " (" + std::to_string(in->fixtureCount) + " fixtures)");

@@ -56,9 +56,12 @@ Message Station::request(ConnectionId c, const std::string& fileUuid, const std:
   CommitInfo owed;
   owed.fileUuid = fileUuid;
   owed.stationUuid = fromStation;
-  if (auto p = peers_.find(fromStation); p != peers_.end())
+  // What the file will be: the commit it named, or for the latest the station's last one.
+  if (auto p = peers_.find(fromStation); p != peers_.end()) {
+    if (fileUuid.empty() && !p->second.commits.empty()) owed = p->second.commits.back();
     for (const CommitInfo& k : p->second.commits)
-      if (k.fileUuid == fileUuid) owed = k;
+      if (!fileUuid.empty() && k.fileUuid == fileUuid) owed = k;
+  }
   pending_[c] = owed;
   return m;
 }
