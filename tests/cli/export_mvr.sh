@@ -12,13 +12,7 @@ repo=$2
 source "$repo/tests/cli/test_data.bash"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-fail=0
-passed=0
-# The status is taken into rc before check's message is expanded: a $(...) in the message would
-# set $? to its own status.
-check() {  # check NAME CONDITION-EXIT-STATUS
-  if [ "$2" -eq 0 ]; then passed=$((passed + 1)); else echo "FAIL: $1"; fail=$((fail + 1)); fi
-}
+source "$repo/tests/cli/checks.bash"
 scene_xml() {  # scene_xml RIG.mvr OUT.xml: the archive's GeneralSceneDescription.xml
   python3 -c 'import sys, zipfile; open(sys.argv[2], "wb").write(zipfile.ZipFile(sys.argv[1]).read("GeneralSceneDescription.xml"))' "$1" "$2"
 }

@@ -9,11 +9,7 @@ repo=$2
 source "$repo/tests/cli/test_data.bash"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-fail=0
-passed=0
-check() {  # check NAME CONDITION-EXIT-STATUS
-  if [ "$2" -eq 0 ]; then passed=$((passed + 1)); else echo "FAIL: $1"; fail=$((fail + 1)); fi
-}
+source "$repo/tests/cli/checks.bash"
 
 # The demo with its fixtures in reverse order in the file.
 python3 "$repo/tests/show_copy.py" "$repo/examples/demo/demo.haze.json" "$tmp/demo.haze.json"

@@ -13,11 +13,7 @@ source "$repo/tests/cli/test_data.bash"
 need_data gdtf/mvr/basic_fixture.mvr gdtf/mvr/capture_demo_show.mvr gdtf/mvr/scene_objects.mvr
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-fail=0
-passed=0
-check() {  # check NAME CONDITION-EXIT-STATUS
-  if [ "$2" -eq 0 ]; then passed=$((passed + 1)); else echo "FAIL: $1"; fail=$((fail + 1)); fi
-}
+source "$repo/tests/cli/checks.bash"
 
 for name in basic_fixture capture_demo_show scene_objects; do
   mvr=$(data_path "gdtf/mvr/$name.mvr")

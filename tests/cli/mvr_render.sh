@@ -12,11 +12,7 @@ source "$repo/tests/cli/test_data.bash"
 data=$(data_dir gdtf/mvr)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-fail=0
-passed=0
-check() {  # check NAME CONDITION-EXIT-STATUS
-  if [ "$2" -eq 0 ]; then passed=$((passed + 1)); else echo "FAIL: $1"; fail=$((fail + 1)); fi
-}
+source "$repo/tests/cli/checks.bash"
 
 count=0
 for mvr in "$data"/*.mvr; do

@@ -75,6 +75,29 @@ double meanRelativeError(const ImageRGB& a, const ImageRGB& ref, const std::vect
   return pixels.empty() ? 0.0 : sum / static_cast<double>(pixels.size());
 }
 
+// The GPU's radiance of each frame over the venue with the blocker (`shaded`), and of the first
+// frame over the venue without it: a floor's V is the one over the other. Empty when a renderer
+// cannot be made (the test fails).
+struct FloorImages {
+  ImageRGB open;
+  std::vector<ImageRGB> shaded;
+};
+FloorImages renderFloor(const Venue& shaded, const Venue& open, Quality q, int w, int h, const std::vector<FrameState>& frames) {
+  FloorImages out;
+  const RenderSettings settings = renderSettingsFor(q, w, h);
+  auto rs = Renderer::create(shaded, settings);
+  auto ro = Renderer::create(open, settings);
+  EXPECT_TRUE(rs.ok() && ro.ok());
+  if (!rs.ok() || !ro.ok()) return out;
+  (*ro)->render(frames.front());
+  out.open = (*ro)->readRadiance();
+  for (const FrameState& f : frames) {
+    (*rs)->render(f);
+    out.shaded.push_back((*rs)->readRadiance());
+  }
+  return out;
+}
+
 class SoftShadow : public GlTest {};
 
 // The shaft under the sphere seen from the side: every ray crosses lit haze, the penumbra, the
@@ -212,18 +235,13 @@ TEST_F(SoftShadow, FloorPenumbraHasTheWidthOfSimilarTriangles) {
 
   for (Quality q : {Quality::High, Quality::Default}) {
     const char* label = q == Quality::High ? "high" : "default";
-    RenderSettings settings = renderSettingsFor(q, kW, kH);
-    auto rs = Renderer::create(shaded, settings);
-    auto ro = Renderer::create(open, settings);
-    ASSERT_TRUE(rs.ok() && ro.ok());
-    (*ro)->render(frame);
-    const ImageRGB gpuOpen = (*ro)->readRadiance();
-    (*rs)->render(frame);
-    const ImageRGB gpuSoft = (*rs)->readRadiance();
     FrameState hardFrame = frame;
     hardFrame.softShadows = false;
-    (*rs)->render(hardFrame);
-    const ImageRGB gpuHard = (*rs)->readRadiance();
+    const FloorImages gpu = renderFloor(shaded, open, q, kW, kH, {frame, hardFrame});
+    ASSERT_EQ(gpu.shaded.size(), 2u);
+    const ImageRGB& gpuOpen = gpu.open;
+    const ImageRGB& gpuSoft = gpu.shaded[0];
+    const ImageRGB& gpuHard = gpu.shaded[1];
     for (const auto& [name, v] : {std::pair{"reference", refV}, std::pair{"gpu soft", profile(gpuSoft, gpuOpen)},
                                   std::pair{"gpu hard", profile(gpuHard, gpuOpen)}}) {
       const double inner = crossing(v, 0.02), outerPx = crossing(v, 0.98);
@@ -291,14 +309,9 @@ TEST_F(SoftShadow, SlantedFloorPenumbraMatchesTheReference) {
     if (refOpen.pixels[i].g > 0.0f && refV[i] > 0.05 && refV[i] < 0.95) penumbra.push_back(i);
   for (Quality q : {Quality::High, Quality::Default}) {
     const char* label = q == Quality::High ? "high" : "default";
-    RenderSettings settings = renderSettingsFor(q, kW, kH);
-    auto rs = Renderer::create(shaded, settings);
-    auto ro = Renderer::create(open, settings);
-    ASSERT_TRUE(rs.ok() && ro.ok());
-    (*ro)->render(frame);
-    const ImageRGB gpuOpen = (*ro)->readRadiance();
-    (*rs)->render(frame);
-    const std::vector<double> gpuV = visibility((*rs)->readRadiance(), gpuOpen);
+    const FloorImages gpu = renderFloor(shaded, open, q, kW, kH, {frame});
+    ASSERT_EQ(gpu.shaded.size(), 1u);
+    const std::vector<double> gpuV = visibility(gpu.shaded[0], gpu.open);
     double err = 0.0, bias = 0.0;
     for (size_t i : penumbra) {
       err += std::abs(gpuV[i] - refV[i]);
