@@ -1,8 +1,9 @@
 # A station for tests/gui/mvr_xchange.sh, written from the MVR-xchange specification's text (TCP
 # mode: the 28-byte big-endian header, JSON by hand): it joins haze announcing one file, and
-# answers the REQUEST that haze's window sends with that file, then stays a moment.
+# answers the REQUEST that haze's window sends with that file, then stays joined, answering
+# commits, until haze leaves or closes (at most the socket's 120 s without a message).
 # usage: python3 mvr_xchange_peer.py PORT FILE.mvr
-import json, socket, struct, sys, time, uuid
+import json, socket, struct, sys, uuid
 port, mvr_path = int(sys.argv[1]), sys.argv[2]
 mvr = open(mvr_path, 'rb').read()
 fid = str(uuid.uuid4())
@@ -31,4 +32,16 @@ while True:
         assert m.get('FileUUID', '') in ('', fid), m
         s.sendall(packet(mvr, 1))
         break
-time.sleep(5)
+# Joined until haze says MVR_LEAVE (the window's Stop) or closes: a loaded machine may take many
+# seconds between the file and the Stop click.
+try:
+    while True:
+        kind, body = read(s)
+        m = json.loads(body) if kind == 0 else {}
+        if m.get('Type') == 'MVR_COMMIT':
+            s.sendall(packet({'Type': 'MVR_COMMIT_RET', 'OK': True, 'Message': ''}))
+        elif m.get('Type') == 'MVR_LEAVE':
+            s.sendall(packet({'Type': 'MVR_LEAVE_RET', 'OK': True, 'Message': ''}))
+            break
+except (SystemExit, OSError):
+    pass
