@@ -384,13 +384,6 @@ constexpr const char* kSplitFineQxf = R"(<?xml version="1.0" encoding="UTF-8"?>
   <Capability Min="128" Max="255" Preset="ColorMacro" Res1="#ff0000">Red</Capability>
  </Channel>
  <Mode Name="16 bit">
-  <Physical>
-   <Bulb Type="LED" Lumens="8000" ColourTemperature="6500"/>
-   <Dimensions Weight="18" Width="300" Height="450" Depth="250"/>
-   <Lens Name="PC" DegreesMin="15" DegreesMax="15"/>
-   <Focus Type="Head" PanMax="540" TiltMax="270"/>
-   <Technical PowerConsumption="300" DmxConnector="5-pin"/>
-  </Physical>
   <Channel Number="0">Pan</Channel>
   <Channel Number="1">Tilt</Channel>
   <Channel Number="2">Pan fine</Channel>

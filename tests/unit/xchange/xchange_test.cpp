@@ -244,11 +244,17 @@ const char* kHaze = "11111111-2222-4333-8444-555555555555";
 const char* kPeer = "4aa291a1-1a62-45fe-aabc-e90e5e2399a8";
 const char* kFile = "a7669ff9-bd61-4486-aea6-c190f8ba6b8c";
 
+// A commit of the test file, `size` bytes, as the tests below announce it.
+CommitInfo peerFile(std::size_t size) {
+  CommitInfo c;
+  c.fileUuid = kFile;
+  c.fileSize = size;
+  return c;
+}
+
 TEST(XchangeStation, AnswersJoinWithWhatItOffers) {
   Station haze({"haze test", kHaze});
-  CommitInfo offered;
-  offered.fileUuid = kFile;
-  offered.fileSize = 123;
+  const CommitInfo offered = peerFile(123);
   haze.offer(offered);
   Station peer({"peer", kPeer, "Test"});
   Reaction r = haze.receive(7, jsonPacket(peer.join()));
@@ -302,9 +308,7 @@ TEST(XchangeStation, CommitIsRequestedAndTheFileChecked) {
   Station haze({"haze", kHaze});
   haze.setRequestCommits(true);
   Station peer({"peer", kPeer});
-  CommitInfo c;
-  c.fileUuid = kFile;
-  c.fileSize = mvr.size();
+  CommitInfo c = peerFile(mvr.size());
   c.comment = "new rig";
   Reaction r = haze.receive(3, jsonPacket(peer.commit(c)));
   ASSERT_EQ(r.replies.size(), 1u);
@@ -332,9 +336,7 @@ TEST(XchangeStation, ABadFileIsRefusedAndNothingHandedOn) {
   Station haze({"haze", kHaze});
   haze.setRequestCommits(true);
   Station peer({"peer", kPeer});
-  CommitInfo c;
-  c.fileUuid = kFile;
-  c.fileSize = mvr.size();
+  CommitInfo c = peerFile(mvr.size());
   ASSERT_TRUE(haze.receive(1, jsonPacket(peer.commit(c))).request);
   Bytes notZip(mvr.size(), 'x');
   Reaction r = haze.receive(1, Packet{PayloadType::File, notZip});
