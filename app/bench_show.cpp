@@ -12,7 +12,7 @@
 namespace haze {
 
 Status loadBenchShow(const Show& show, const ProfileSet& profiles, const std::string& cue,
-                     const std::string& camera, bool mergeCells, Venue& venue, FrameState& frame, int& fixtures) {
+                     const std::string& camera, CellBeams cells, Venue& venue, FrameState& frame, int& fixtures) {
   const std::string file = show.file.string();
   StageState state = defaultState(show);
   HazerSchedule hazers;
@@ -38,7 +38,7 @@ Status loadBenchShow(const Show& show, const ProfileSet& profiles, const std::st
   std::vector<std::string> warnings;
   auto density = atmosphere.at(show, venue.boundsMin, venue.boundsMax, 0.0, warnings, hazers);
   for (const std::string& w : warnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
-  auto f = buildFrame(show, profiles, state, camera, FrameOptions{.mergeCells = mergeCells, .density = std::move(density)});
+  auto f = buildFrame(show, profiles, state, camera, FrameOptions{.cells = cells, .density = std::move(density)});
   if (!f) return f.error();
   frame = std::move(*f);
   fixtures = static_cast<int>(show.fixtures.size());

@@ -39,7 +39,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 constexpr const char* kBenchUsage =
-    "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells separate|merged]]\n"
+    "usage: haze bench [--fixtures N | --show SHOW [--cue N] [--camera NAME] [--cells auto|separate|merged]]\n"
     "                  [--width W --height H] [--quality Q] [--frames K] [--planes N] [--scatter-divisor D]\n"
     "                  [--min-samples M] [--refine C] [--density N] [--no-bodies | --compare-bodies] [--sun]\n"
     "                  [--shadows soft|hard|compare] [--compare-particles [--particle-density N]]\n"
@@ -47,7 +47,7 @@ constexpr const char* kBenchUsage =
     "       haze bench --study [--width W --height H]\n"
     "Times the synthetic stage (N fixtures, 16 by default; the stage grows with N) or a show's cue (the\n"
     "first unless --cue, from the show's first camera unless --camera) per frame and per pass;\n"
-    "--cells merged draws a fixture's alike cells as one beam (docs/cells.md);\n"
+    "--cells as haze render (docs/cells.md; auto by default);\n"
     "--compare-reference also renders the CPU reference and gives the mean relative error; --study runs\n"
     "the virtual-plane accuracy study. --density N also renders the frame through an N^3 density field\n"
     "with a hazer (the bench scene's: docs/rendering.md, \"Density\"), alternating frame by frame with the\n"
@@ -89,7 +89,7 @@ double ratio(double a, double b) { return b > 0 ? a / b : 0.0; }
 
 struct BenchOptions {
   int fixtures = -1, width = 1280, height = 720, frames = 5;
-  std::string quality = "default", showPath, cue, camera, cells = "separate", shadows;
+  std::string quality = "default", showPath, cue, camera, cells = "auto", shadows;
   bool json = false, compareReference = false, study = false, noBodies = false, compareBodies = false, sun = false,
        compareParticles = false;
   double particleDensity = ParticleSettings{}.densityPerM3;
@@ -123,7 +123,7 @@ CommandLine benchCommandLine(BenchOptions& o) {
       .integer("--min-samples", o.minSamples, 0, 256, "0..256")
       .number("--refine", o.refine, 0.0, 2.0, "0..2 (0 = no refinement)")
       .integer("--density", o.densityCells, 2, kMaxDensityCellsPerSide, "2..256 cells per side")
-      .choice("--cells", o.cells, {"separate", "merged"})
+      .choice("--cells", o.cells, {"auto", "separate", "merged"})
       .choice("--shadows", o.shadows, {"soft", "hard", "compare"})
       .number("--move", o.moveDeg, 0.0, 90.0, "0..90 degrees per frame")
       .number("--map-budget", o.mapBudgetMs, 0.0, 1e6, "milliseconds, 0 = unlimited");
@@ -135,7 +135,7 @@ std::optional<std::string> conflict(const BenchOptions& o) {
   const bool compareShadows = o.shadows == "compare", density = o.densityCells > 0;
   if (!o.showPath.empty() && o.fixtures >= 0) return "--fixtures and --show exclude each other";
   if (o.showPath.empty() && (!o.cue.empty() || !o.camera.empty())) return "--cue and --camera need --show";
-  if (o.showPath.empty() && o.cells != "separate") return "--cells needs --show";
+  if (o.showPath.empty() && o.cells != "auto") return "--cells needs --show";
   if (o.noBodies && o.compareBodies) return "--no-bodies and --compare-bodies exclude each other";
   if (o.compareBodies && density) return "--compare-bodies and --density exclude each other";
   if (compareShadows && (o.compareBodies || density || o.sun || o.compareParticles))
@@ -476,7 +476,7 @@ std::optional<int> loadFrame(const CommandLine& cli, BenchOptions& o, Venue& ven
   } else {
     auto checked = cli.readShow(o.showPath);
     if (!checked) return kExitBadInput;
-    if (Status s = loadBenchShow(checked->show, checked->profiles, o.cue, o.camera, o.cells == "merged", venue, frame,
+    if (Status s = loadBenchShow(checked->show, checked->profiles, o.cue, o.camera, cellBeamsNamed(o.cells), venue, frame,
                                  o.fixtures);
         !s)
       return cli.fail(s.error().str());

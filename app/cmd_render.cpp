@@ -65,7 +65,9 @@ constexpr const char* kUsage =
     "skips a frame whose file is already there and decodes completely; a cut-short one is redone.\n"
     "--progress reports progress on stderr even when it is not a terminal (it always is on one).\n"
     "--movement real|instant: pan, tilt and zoom at the fixtures' speeds (default) or at once (--at, --video).\n"
-    "--cells separate|merged: one beam per cell (default), or a fixture's alike cells as one beam.\n"
+    "--cells auto|separate|merged: a fixture's cells as one beam where they are driven alike and packed\n"
+    "close enough to overlap within a metre of it, else one beam per cell (auto, the default); one beam\n"
+    "per cell always (separate); the cells that share a light map always as one beam (merged).\n"
     "--no-bodies leaves the fixtures' housings out (docs/fixtures.md, \"Bodies\").\n"
     "--shadows soft|hard: shadows softened by each lens disc or point lights' (default: the show's\n"
     "atmosphere.shadows, soft unless it says hard; docs/physics.md, \"Soft shadows\").\n"
@@ -81,7 +83,7 @@ std::string secondsText(double s) {
 // What the command line says, as parsed, and what checkOptions derives from it.
 struct RenderArgs {
   std::string showPath, cue, list, out, camera, quality = "default", exposureMode, exrPixel = "half", movement = "real",
-                                                cells = "separate", shadows;
+                                                cells = "auto", shadows;
   double at = -1.0, exposure = std::nan(""), bloom = 0.0;
   int width = 1280, height = 720;
   bool allCues = false, progress = false, caption = false, noBodies = false, particlesOn = false, particlesOff = false;
@@ -117,7 +119,7 @@ void declareOptions(CommandLine& cli, RenderArgs& a) {
       .choice("--exposure-mode", a.exposureMode, {"auto", "manual", "per-frame"})
       .number("--bloom", a.bloom, 0, 1, "a fraction 0..1")
       .choice("--movement", a.movement, {"real", "instant"})
-      .choice("--cells", a.cells, {"separate", "merged"})
+      .choice("--cells", a.cells, {"auto", "separate", "merged"})
       .choice("--shadows", a.shadows, {"soft", "hard"})
       .choice("--exr-pixel", a.exrPixel, {"half", "float"})
       .text("-o|--output", a.out, "a file or a folder")
@@ -180,7 +182,7 @@ std::optional<std::string> checkOptions(RenderArgs& a) {
 RenderJobOptions jobOptions(const RenderArgs& a) {
   RenderJobOptions o{.camera = a.camera, .width = a.width, .height = a.height, .quality = *parseQuality(a.quality),
                      .exposureMode = parseExposureMode(a.exposureMode), .bloom = static_cast<float>(a.bloom),
-                     .mergeCells = a.cells == "merged", .bodies = !a.noBodies, .exrPixel = *parseExrPixel(a.exrPixel),
+                     .cells = cellBeamsNamed(a.cells), .bodies = !a.noBodies, .exrPixel = *parseExrPixel(a.exrPixel),
                      .progress = a.progress};
   if (!std::isnan(a.exposure)) o.exposureEv = static_cast<float>(a.exposure);
   if (!a.shadows.empty()) o.softShadows = a.shadows == "soft";

@@ -10,6 +10,7 @@
 #include "renderer/output/exr.h"
 #include "shows/scene/exposure.h"
 #include "shows/playback.h"
+#include "shows/frame/frame_builder.h"
 #include "shows/show.h"
 
 namespace haze {
@@ -26,7 +27,7 @@ struct RenderJobOptions {
   std::optional<ExposureMode> exposureMode;
   std::optional<float> exposureEv;
   float bloom = 0.0f;  // PNG only
-  bool mergeCells = false;  // docs/cells.md, "Cost": a fixture's alike cells as one beam
+  CellBeams cells = CellBeams::Auto;  // docs/cells.md, "Cost": a fixture's cells as one beam or one per cell
   bool bodies = true;       // the fixtures' housings (docs/fixtures.md, "Bodies"); --no-bodies
   std::optional<bool> softShadows;  // --shadows soft|hard; none: the show's atmosphere.shadows
   ExrPixel exrPixel = ExrPixel::Half;  // EXR only

@@ -92,7 +92,7 @@ Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const S
   auto density = atmosphere_.at(show, venue_.boundsMin, venue_.boundsMax, clockS, warnings, hazers_);
   for (const std::string& w : warnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
   auto frame = buildFrame(show, profiles, state, options_.camera,
-                          FrameOptions{.mergeCells = options_.mergeCells,
+                          FrameOptions{.cells = options_.cells,
                                        .bodies = options_.bodies,
                                        .clockS = clockS,
                                        .density = std::move(density),

@@ -2,7 +2,8 @@
 # What cells cost (docs/cells.md, docs/rendering.md "Cells"): `haze bench --show` on three rigs
 # that light the same place with the same photometry:
 #   one    a 1-cell wash (tests/data/gdtf/hex1_wash.xml)
-#   cells  a 19-cell wash (tests/data/gdtf/hex19_wash.xml), every cell lit
+#   cells  a 19-cell wash (tests/data/gdtf/hex19_wash.xml), every cell lit, one beam per cell
+#          (--cells separate: every cell lit alike, `auto` would draw it as one beam)
 #   split  19 separate 1-cell washes at the 19 cells' lens positions
 #   merged the 19-cell wash with --cells merged (its alike cells as one beam)
 # and prints each median frame time and the ratios, measured in one run.
@@ -45,7 +46,7 @@ for rig in one cells split merged; do
   if [ "$rig" = merged ]; then
     json=$("$HAZE" bench --show "$OUT/cells.haze.json" --cells merged --json "$@")
   else
-    json=$("$HAZE" bench --show "$OUT/$rig.haze.json" --json "$@")
+    json=$("$HAZE" bench --show "$OUT/$rig.haze.json" --cells separate --json "$@")
   fi
   ms[$rig]=$(python3 -c 'import json,sys; j=json.loads(sys.argv[1]); print(j["median_frame_ms"], j["beams"], j["pass_ms"]["shadow_maps"], j["pass_ms"]["planes"], j["device"])' "$json")
   echo "$rig: median_frame_ms beams shadow_maps_ms planes_ms device = ${ms[$rig]}"

@@ -31,6 +31,7 @@
 #include <imgui_internal.h>  // GetItemID: which widget an edit came from (undo merging)
 
 #include "shows/frame/atmosphere_field.h"
+#include "shows/frame/frame_builder.h"
 #include "app/gui/desktop_dialog.h"
 #include "shows/edit/fixture_rows.h"
 #include "shows/edit/gui_settings.h"
@@ -88,6 +89,7 @@ struct Gui {
   // Heads at the fixtures' own speeds (docs/movement.md); View > Real movement turns it off.
   bool realMovement = true;
   bool showBodies = true;  // View > Fixture bodies (docs/fixtures.md, "Bodies")
+  CellBeams cells = CellBeams::Auto;  // View > Cells (docs/cells.md, "Cost")
   bool showNumbers = true;  // View > Fixture numbers: each marker's id beside it
   std::unique_ptr<MovementFollower> heads;
   const ShowDocument* headsDoc = nullptr;  // the document `heads` follows

@@ -422,14 +422,16 @@ struct ChangeWatch {
   float fovDeg = 0.0f;
   std::uint64_t revision = 0;
   bool bodies = true;
+  CellBeams cells = CellBeams::Auto;
   StageState stage;  // a master fader or a snap changes the stage without an edit or a fade
 
   bool changing(const Gui& gui) {
     const bool moving = gui.heads && !gui.heads->settled();
     const bool changed = gui.live || gui.doc->fading(gui.nowS) || moving || !(gui.orbit == orbit) || gui.fovYDeg != fovDeg ||
-                         gui.doc->revision() != revision || gui.showBodies != bodies || gui.stage != stage;
+                         gui.doc->revision() != revision || gui.showBodies != bodies || gui.cells != cells || gui.stage != stage;
     stage = gui.stage;
     bodies = gui.showBodies;
+    cells = gui.cells;
     orbit = gui.orbit;
     fovDeg = gui.fovYDeg;
     revision = gui.doc->revision();
@@ -455,6 +457,7 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   const double exposureS = std::clamp(gui.frameMs / 1000.0, 1.0 / 120.0, 0.1);
   FrameOptions frameOptions;
   frameOptions.bodies = gui.showBodies;
+  frameOptions.cells = gui.cells;
   frameOptions.clockS = gui.nowS;
   if (flash) frameOptions.time = FrameTime{gui.nowS, exposureS};
   std::vector<std::string> densityWarnings;

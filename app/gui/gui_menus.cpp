@@ -182,6 +182,15 @@ void drawMenuBar(Gui& gui) {
     // docs/movement.md: off, heads jump to every value at once.
     ImGui::MenuItem("Real movement speeds", nullptr, &gui.realMovement);
     ImGui::MenuItem("Fixture bodies", nullptr, &gui.showBodies);
+    // A multi-cell fixture as one beam where its cells act as one, or always one beam per cell.
+    if (ImGui::BeginMenu("Cells")) {
+      const std::pair<CellBeams, const char*> choices[] = {{CellBeams::Auto, "One beam where driven alike"},
+                                                           {CellBeams::Separate, "One beam per cell"},
+                                                           {CellBeams::Merged, "One beam per fixture"}};
+      for (const auto& [mode, label] : choices)
+        if (ImGui::MenuItem(label, nullptr, gui.cells == mode)) gui.cells = mode;
+      ImGui::EndMenu();
+    }
     ImGui::MenuItem("Fixture numbers", nullptr, &gui.showNumbers);
     ImGui::Separator();
     if (ImGui::MenuItem("Lock exposure", "E", gui.exposureLocked() || gui.lockExposureWhenMetered)) toggleExposureLock(gui);

@@ -2,9 +2,11 @@
 #include "shows/frame/cell_merge.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "shows/frame/frame_builder.h"
 
@@ -44,6 +46,26 @@ void mergeCellBeams(std::vector<BeamState>& beams) {
     out.push_back(std::move(merged));
   }
   beams = std::move(out);
+}
+
+bool cellsActAsOne(const std::vector<BeamState>& beams, size_t cells) {
+  if (beams.size() < 2 || beams.size() != cells) return false;
+  const BeamState& first = beams.front();
+  glm::vec3 centre(0.0f);
+  for (const BeamState& b : beams) {
+    if (b.cell < 0 || b.opticsKey != first.opticsKey) return false;
+    // Alike to a thousandth of the level: what DMX's 8 bits cannot tell apart.
+    const float tolerance = 1e-3f * std::max(first.optics.dimmer, b.optics.dimmer);
+    if (std::abs(b.optics.dimmer - first.optics.dimmer) > tolerance) return false;
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(b.optics.color[c] - first.optics.color[c]) > 1e-3f) return false;
+    centre += b.pose.lensPosition;
+  }
+  centre /= static_cast<float>(beams.size());
+  float spread = 0.0f;
+  for (const BeamState& b : beams) spread = std::max(spread, glm::length(b.pose.lensPosition - centre));
+  const float halfField = 0.5f * glm::radians(std::clamp(first.optics.fieldAngleDeg, 0.0f, 179.0f));
+  return spread <= std::tan(halfField) * kCellsOverlapWithinM;
 }
 
 }  // namespace haze

@@ -64,6 +64,10 @@ uint64_t poseCacheKey(const BeamPose& pose) {
   return pk;
 }
 
+CellBeams cellBeamsNamed(const std::string& name) {
+  return name == "separate" ? CellBeams::Separate : name == "merged" ? CellBeams::Merged : CellBeams::Auto;
+}
+
 Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, const StageState& state,
                               const std::string& cameraName, const FrameOptions& options) {
   FrameState frame;
@@ -143,7 +147,8 @@ Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, cons
       b.opticsKey = ok;
       fixtureBeams.push_back(std::move(b));
     }
-    if (options.mergeCells) mergeCellBeams(fixtureBeams);
+    if (options.cells == CellBeams::Merged || (options.cells == CellBeams::Auto && cellsActAsOne(fixtureBeams, profile.cells.size())))
+      mergeCellBeams(fixtureBeams);
     // A prism: one beam per facet for each cell's beam, each with 1/N of its light (the copies
     // share one light map).
     const PrismSpec* prism = profile.findPrism(a.prism);

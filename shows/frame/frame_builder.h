@@ -21,9 +21,16 @@ struct FrameTime {
   double exposureS = 0.0;
 };
 
+// A multi-cell fixture's beams (docs/cells.md, "Cost"): one per lit cell, the cells that share
+// a light map as one beam, or (auto) one beam where the cells act as one (cellsActAsOne in
+// cell_merge.h) and one per cell where they do not.
+enum class CellBeams { Separate, Merged, Auto };
+
+// "separate", "merged" or "auto" (the --cells options); anything else is auto.
+CellBeams cellBeamsNamed(const std::string& name);
+
 struct FrameOptions {
-  // Cells of one fixture that share a light map drawn as one beam (docs/cells.md, "Cost").
-  bool mergeCells = false;
+  CellBeams cells = CellBeams::Auto;
   std::optional<FrameTime> time;  // none: a still
   // The fixtures' housings (docs/fixtures.md, "Bodies"), dark fixtures' too.
   bool bodies = true;

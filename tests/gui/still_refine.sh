@@ -5,7 +5,7 @@
 # to show after the view stopped. Timing-free checks: the line is there with a time and the
 # refined frames counted, the still view is lit, and a view that never stops says nothing. The time itself
 # is printed, not asserted (a loaded test machine takes longer): on the Capture rig of the
-# optional test data at a 1280-pixel-wide viewport it is the figure docs/gui.md gives.
+# optional test data at a 1280x720 viewport it is the figure docs/gui.md gives.
 set -euo pipefail
 haze=$1; root=$2
 . "$root/tests/gui/xvfb.bash"
@@ -40,10 +40,12 @@ passed=$((passed + 1))
 
 if capture=$(data_path gdtf/mvr/capture_demo_show.mvr); then
   "$haze" import-mvr "$capture" -o "$out/capture.haze.json" >/dev/null 2>&1 || fail "import-mvr $capture"
-  line=$("$haze" open "$out/capture.haze.json" --width 1920 --height 1080 --quality default --turntable 1 \
+  # A 1905x739 window leaves the viewport 1280x720 beside the panels.
+  line=$("$haze" open "$out/capture.haze.json" --width 1905 --height 739 --quality default --turntable 1 \
          --turn-frames 10-13 --frames 24 | grep -E '^(turntable|still):' || true)
   echo "Capture rig (load $(cut -d' ' -f1 /proc/loadavg)): $line"
   grep -q '^still: the first default frame shown [0-9]* ms' <<<"$line" || fail "no still line on the Capture rig"
+  grep -q ' of 1280x720,' <<<"$line" || fail "the Capture rig's viewport is not 1280x720"
   passed=$((passed + 1))
 else
   want_data gdtf/mvr/capture_demo_show.mvr || true

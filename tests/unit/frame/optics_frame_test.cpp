@@ -86,6 +86,62 @@ TEST(OpticsFrame, PrismBecomesNBeamsAndAStillStrobeItsDuty) {
   EXPECT_TRUE(closed->beams.empty());
 }
 
+// A wash of three cells on a row, `spacing` metres apart, with a 16-degree field.
+std::shared_ptr<Profile> rowOfCells(float spacing) {
+  auto profile = std::make_shared<Profile>();
+  auto d = parametricDistribution(10.0f, 16.0f, 1000.0f);
+  EXPECT_TRUE(d.ok());
+  profile->distribution = std::make_shared<const Distribution>(*d);
+  profile->fieldAngleDeg = 16.0f;
+  profile->zoomDeg = {16.0f, 16.0f};
+  for (float x : {-spacing, 0.0f, spacing}) {
+    Cell c;
+    c.name = "cell";
+    c.lensOffset = {x, 0.0f, 0.0f};
+    c.distribution = profile->distribution;
+    c.fieldAngleDeg = 16.0f;
+    profile->cells.push_back(c);
+  }
+  return profile;
+}
+
+// docs/cells.md, "Cost": `auto` (the default) draws a fixture's cells as one beam when they are
+// driven alike and lie close enough for their cones to overlap within a metre (16 degrees:
+// tan 8 degrees = 0.14 m), else one beam per cell; `separate` always one per cell.
+TEST(OpticsFrame, AutoDrawsCellsDrivenAlikeAndPackedCloseAsOneBeam) {
+  Show show;
+  show.file = "cells.haze.json";
+  show.fixtures.push_back(FixtureDef{.id = 1, .name = "", .profile = "wash", .mode = "", .position = {0, 5, 0}, .rotationDeg = {}, .patch = {}});
+  const auto beamsOf = [&](float spacing, std::vector<CellAttributes> cells, CellBeams mode) {
+    Attributes a;
+    a.intensity = 0.8f;
+    a.cells = std::move(cells);
+    auto frame = buildFrame(show, ProfileSet{{"wash", rowOfCells(spacing)}}, StageState{{1, a}}, "", FrameOptions{.cells = mode});
+    EXPECT_TRUE(frame.ok());
+    return frame.ok() ? frame->beams : std::vector<BeamState>{};
+  };
+  const CellAttributes white{1.0f, glm::vec3(1.0f)};
+  const std::vector<CellAttributes> alike{white, white, white};
+  // Alike and 0.1 m from the centre: one beam with the three cells' light, at their centre, its
+  // lens disc covering theirs.
+  const auto one = beamsOf(0.1f, alike, CellBeams::Auto);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_NEAR(one[0].optics.dimmer, 3.0f * 0.8f, 1e-5f);
+  EXPECT_NEAR(one[0].pose.lensPosition.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(one[0].optics.lensRadiusM, 0.1f + BeamOptics::kDefaultLensRadiusM, 1e-6f);
+  EXPECT_EQ(one[0].cell, -1);
+  EXPECT_EQ(beamsOf(0.1f, alike, CellBeams::Separate).size(), 3u);
+  // Levels that 8-bit DMX cannot tell apart are alike.
+  EXPECT_EQ(beamsOf(0.1f, {white, {0.9995f, glm::vec3(1.0f)}, white}, CellBeams::Auto).size(), 1u);
+  // Driven apart: a dimmer cell, a red cell, a dark cell (the two lit ones are alike, but the
+  // fixture is not lit as one).
+  EXPECT_EQ(beamsOf(0.1f, {white, {0.5f, glm::vec3(1.0f)}, white}, CellBeams::Auto).size(), 3u);
+  EXPECT_EQ(beamsOf(0.1f, {white, {1.0f, glm::vec3(1.0f, 0.0f, 0.0f)}, white}, CellBeams::Auto).size(), 3u);
+  EXPECT_EQ(beamsOf(0.1f, {white, {0.0f, glm::vec3(1.0f)}, white}, CellBeams::Auto).size(), 2u);
+  // Alike but spread like a bar: 0.2 m from the centre is past tan 8 degrees x 1 m.
+  EXPECT_EQ(beamsOf(0.2f, alike, CellBeams::Auto).size(), 3u);
+}
+
 // A multi-cell fixture (docs/cells.md): every lit cell passes the fixture's shutter, blades and
 // frost, and the prism copies each cell's beam; --cells merged merges before the prism.
 TEST(OpticsFrame, EveryCellGetsTheShutterBladesFrostAndPrism) {
@@ -138,7 +194,7 @@ TEST(OpticsFrame, EveryCellGetsTheShutterBladesFrostAndPrism) {
   ASSERT_TRUE(unbladed.ok());
   EXPECT_NE(unbladed->beams.front().opticsKey, frame->beams.front().opticsKey);
   // Merged: the two alike cells become one beam, then three prism copies of it.
-  auto merged = buildFrame(show, profiles, stage, "", FrameOptions{.mergeCells = true});
+  auto merged = buildFrame(show, profiles, stage, "", FrameOptions{.cells = CellBeams::Merged});
   ASSERT_TRUE(merged.ok());
   ASSERT_EQ(merged->beams.size(), 3u);
   for (const BeamState& b : merged->beams) EXPECT_NEAR(b.optics.dimmer, 0.8f * 1.5f * 0.25f / 3.0f, 1e-6f);
