@@ -67,7 +67,8 @@ constexpr const char* kUsage =
     "--movement real|instant: pan, tilt and zoom at the fixtures' speeds (default) or at once (--at, --video).\n"
     "--cells auto|separate|merged: a fixture's cells as one beam where they are driven alike and packed\n"
     "close enough to overlap within a metre of it, else one beam per cell (auto, the default); one beam\n"
-    "per cell always (separate); the cells that share a light map always as one beam (merged).\n"
+    "per cell always (separate; auto is separate at --quality reference); the cells that share a\n"
+    "light map always as one beam (merged).\n"
     "--no-bodies leaves the fixtures' housings out (docs/fixtures.md, \"Bodies\").\n"
     "--shadows soft|hard: shadows softened by each lens disc or point lights' (default: the show's\n"
     "atmosphere.shadows, soft unless it says hard; docs/physics.md, \"Soft shadows\").\n"
@@ -182,7 +183,9 @@ std::optional<std::string> checkOptions(RenderArgs& a) {
 RenderJobOptions jobOptions(const RenderArgs& a) {
   RenderJobOptions o{.camera = a.camera, .width = a.width, .height = a.height, .quality = *parseQuality(a.quality),
                      .exposureMode = parseExposureMode(a.exposureMode), .bloom = static_cast<float>(a.bloom),
-                     .cells = cellBeamsNamed(a.cells), .bodies = !a.noBodies, .exrPixel = *parseExrPixel(a.exrPixel),
+                     // The reference integrator draws what is there: every cell (docs/cells.md, "Cost").
+                     .cells = a.quality == "reference" && a.cells == "auto" ? CellBeams::Separate : cellBeamsNamed(a.cells),
+                     .bodies = !a.noBodies, .exrPixel = *parseExrPixel(a.exrPixel),
                      .progress = a.progress};
   if (!std::isnan(a.exposure)) o.exposureEv = static_cast<float>(a.exposure);
   if (!a.shadows.empty()) o.softShadows = a.shadows == "soft";

@@ -90,6 +90,7 @@ struct Gui {
   bool realMovement = true;
   bool showBodies = true;  // View > Fixture bodies (docs/fixtures.md, "Bodies")
   CellBeams cells = CellBeams::Auto;  // View > Cells (docs/cells.md, "Cost")
+  size_t beamsDrawn = 0;              // the beams of the last frame built (the probe's, tests/gui/view_cells.sh)
   bool showNumbers = true;  // View > Fixture numbers: each marker's id beside it
   std::unique_ptr<MovementFollower> heads;
   const ShowDocument* headsDoc = nullptr;  // the document `heads` follows

@@ -256,7 +256,7 @@ float meanLevel(int x, int y, int w, int h) {
 // the exposure (locked or not, the EV shown and metered) with the viewport's mean level and the
 // GUI's clock (tests/gui/exposure_lock.sh), each fixture's intensity on stage, and the show
 // panel's width and its tabs' widths drawn and needed (tests/gui/panel_tabs.sh), and the status
-// line (tests/gui/view_settings.sh).
+// line (tests/gui/view_settings.sh), and the beams of the frame (tests/gui/view_cells.sh).
 void publishProbe(const Gui& gui) {
   if (!probing()) return;
   const char* path = std::getenv("HAZE_GUI_PROBE_FILE");
@@ -315,7 +315,8 @@ void publishProbe(const Gui& gui) {
                            ",\"fixture_rows\":" + ids(gui.fixtureRows) + ",\"patch_rows\":" + ids(gui.patchRows) +
                            ",\"filter_field\":" + filter + ",\"library\":" + library + ",\"labels\":[" + labels + "]" + exposure +
                            ",\"intensity\":{" + stage + "},\"tabs\":[" + tabs + "]," + panel +
-                           ",\"status\":\"" + status + "\",\"status_error\":" + (gui.statusError ? "true" : "false") + "}\n";
+                           ",\"status\":\"" + status + "\",\"status_error\":" + (gui.statusError ? "true" : "false") +
+                           ",\"beams\":" + std::to_string(gui.beamsDrawn) + "}\n";
   const std::string tmp = std::string(path) + ".tmp";
   if (std::FILE* f = std::fopen(tmp.c_str(), "w")) {
     std::fputs(text.c_str(), f);
@@ -470,6 +471,7 @@ Result<bool> drawStage(Gui& gui, ViewportRenderers& renderers, ChangeWatch& watc
   for (const std::string& w : densityWarnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
   auto frameState = buildFrame(gui.doc->show(), gui.doc->profiles(), gui.stage, "", frameOptions);
   if (!frameState) return frameState.error();
+  gui.beamsDrawn = frameState->beams.size();
   frameState->camera = gui.cameraState();
   const bool changing = watch.changing(gui) || flash;
   glClearColor(0.08f, 0.08f, 0.09f, 1.0f);

@@ -182,7 +182,12 @@ void drawMenuBar(Gui& gui) {
     // docs/movement.md: off, heads jump to every value at once.
     ImGui::MenuItem("Real movement speeds", nullptr, &gui.realMovement);
     ImGui::MenuItem("Fixture bodies", nullptr, &gui.showBodies);
-    // A multi-cell fixture as one beam where its cells act as one, or always one beam per cell.
+    ImGui::MenuItem("Fixture numbers", nullptr, &gui.showNumbers);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Lock exposure", "E", gui.exposureLocked() || gui.lockExposureWhenMetered)) toggleExposureLock(gui);
+    ImGui::Separator();
+    // A multi-cell fixture as one beam where its cells act as one, or always one beam per cell
+    // (docs/cells.md, "Cost"). Last in the menu: the GUI tests click the items above by place.
     if (ImGui::BeginMenu("Cells")) {
       const std::pair<CellBeams, const char*> choices[] = {{CellBeams::Auto, "One beam where driven alike"},
                                                            {CellBeams::Separate, "One beam per cell"},
@@ -191,9 +196,6 @@ void drawMenuBar(Gui& gui) {
         if (ImGui::MenuItem(label, nullptr, gui.cells == mode)) gui.cells = mode;
       ImGui::EndMenu();
     }
-    ImGui::MenuItem("Fixture numbers", nullptr, &gui.showNumbers);
-    ImGui::Separator();
-    if (ImGui::MenuItem("Lock exposure", "E", gui.exposureLocked() || gui.lockExposureWhenMetered)) toggleExposureLock(gui);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

@@ -6,7 +6,7 @@
 # colour): on the 19-cell test wash lit alike and with one cell red, and, with the optional test
 # data, on the imported Capture rig (its A.leda Wash K20s come from the QLC+ library with 37
 # cells). There the picture must stay what the cells drawn one by one give (PNGs within a level
-# of 255 on average; measured 0.2 at 1280x720).
+# of 255 on average; measured 0.2 at 1280x720). `--quality reference` draws every cell.
 # Usage: cells_auto.sh HAZE REPO
 set -u
 haze=$1
@@ -81,6 +81,15 @@ got=$(beams "$tmp/apart.haze.json")
 check "auto draws 19 beams when one cell is red (got $got)" "$([ "$got" = 19 ]; echo $?)"
 got=$(beams "$tmp/apart.haze.json" --cells merged)
 check "--cells merged draws the 18 white and the red cell as one beam (got $got)" "$([ "$got" = 1 ]; echo $?)"
+# --quality reference draws what is there: every cell, as --cells separate does (byte for byte),
+# not the merged beam.
+for c in auto separate merged; do
+  "$haze" render "$tmp/alike.haze.json" --quality reference --width 48 --height 27 \
+    $([ $c = auto ] || echo --cells $c) -o "$tmp/ref_$c.pfm" >/dev/null 2>&1
+done
+check "--quality reference draws every cell: the same image as --cells separate" \
+  "$(cmp -s "$tmp/ref_auto.pfm" "$tmp/ref_separate.pfm"; echo $?)"
+check "and not the merged beam's" "$([ -s "$tmp/ref_merged.pfm" ] && ! cmp -s "$tmp/ref_auto.pfm" "$tmp/ref_merged.pfm"; echo $?)"
 
 if want_data gdtf/mvr/capture_demo_show.mvr; then
   mkdir -p "$tmp/cap"
