@@ -54,7 +54,7 @@ bool cellsActAsOne(const std::vector<BeamState>& beams, size_t cells) {
   glm::vec3 centre(0.0f);
   for (const BeamState& b : beams) {
     if (b.cell < 0 || b.opticsKey != first.opticsKey) return false;
-    // Alike to a thousandth of the level: what DMX's 8 bits cannot tell apart.
+    // Alike to a thousandth of the level, finer than one step of 8-bit DMX (1/255).
     const float tolerance = 1e-3f * std::max(first.optics.dimmer, b.optics.dimmer);
     if (std::abs(b.optics.dimmer - first.optics.dimmer) > tolerance) return false;
     for (int c = 0; c < 3; ++c)
