@@ -17,6 +17,7 @@ GuiSettings viewSettingsOf(const Gui& gui) {
   s.exposureLocked = gui.exposureLocked() || gui.lockExposureWhenMetered;
   s.fixtureNumbers = gui.showNumbers;
   s.viewportQuality = qualityName(gui.quality);
+  s.cells = gui.cells == CellBeams::Separate ? "separate" : gui.cells == CellBeams::Merged ? "merged" : "auto";
   return s;
 }
 
@@ -33,6 +34,7 @@ void loadViewSettings(Gui& gui, bool qualityFromCommandLine, bool exposureFromCo
   const GuiSettings& s = l.settings;
   if (s.showPanelWidthPx) gui.showPanelW = *s.showPanelWidthPx;  // showPanelWidth clamps it to the window
   gui.showNumbers = s.fixtureNumbers;
+  gui.cells = cellBeamsNamed(s.cells);
   if (!qualityFromCommandLine)
     if (auto q = parseQuality(s.viewportQuality)) gui.quality = *q;
   // The lock, not last run's EV: the first frame whose maps are current is metered and locked

@@ -19,6 +19,7 @@ using json = nlohmann::json;
 namespace {
 
 constexpr const char* kQualities[] = {"draft", "default", "high"};
+constexpr const char* kCells[] = {"auto", "separate", "merged"};
 // Wider than any screen: a larger value is a broken file, not a width (one from a smaller
 // screen than this one is clamped by the GUI instead, which knows the window).
 constexpr float kMaxPanelWidthPx = 20000.0f;
@@ -63,13 +64,18 @@ GuiSettingsLoad parseGuiSettings(std::string_view text, const std::string& fileN
   };
   flag("exposure_locked", s.exposureLocked);
   flag("fixture_numbers", s.fixtureNumbers);
-  if (const auto it = root.find("viewport_quality"); it != root.end()) {
-    bool known = false;
-    for (const char* q : kQualities)
-      if (it->is_string() && it->get<std::string>() == q) known = true;
-    if (known) s.viewportQuality = it->get<std::string>();
-    else problem("/viewport_quality", "expected \"draft\", \"default\" or \"high\"; the default is used");
-  }
+  const auto choice = [&](const char* key, const auto& names, std::string& value, const char* expected) {
+    const auto it = root.find(key);
+    if (it == root.end()) return;
+    for (const char* n : names)
+      if (it->is_string() && it->get<std::string>() == n) {
+        value = n;
+        return;
+      }
+    problem(std::string("/") + key, std::string("expected ") + expected + "; the default is used");
+  };
+  choice("viewport_quality", kQualities, s.viewportQuality, "\"draft\", \"default\" or \"high\"");
+  choice("cells", kCells, s.cells, "\"auto\", \"separate\" or \"merged\"");
   return out;
 }
 
@@ -89,6 +95,7 @@ std::string guiSettingsJson(const GuiSettings& s) {
   j["exposure_locked"] = s.exposureLocked;
   j["fixture_numbers"] = s.fixtureNumbers;
   j["viewport_quality"] = s.viewportQuality;
+  j["cells"] = s.cells;
   return j.dump(2) + "\n";
 }
 
@@ -105,6 +112,7 @@ GuiSettings withChangedSettings(GuiSettings saved, const GuiSettings& before, co
   if (now.exposureLocked != before.exposureLocked) saved.exposureLocked = now.exposureLocked;
   if (now.fixtureNumbers != before.fixtureNumbers) saved.fixtureNumbers = now.fixtureNumbers;
   if (now.viewportQuality != before.viewportQuality) saved.viewportQuality = now.viewportQuality;
+  if (now.cells != before.cells) saved.cells = now.cells;
   return saved;
 }
 

@@ -21,6 +21,7 @@ struct GuiSettings {
   bool exposureLocked = false;
   bool fixtureNumbers = true;
   std::string viewportQuality = "default";  // "draft", "default" or "high" (the View menu's)
+  std::string cells = "auto";                // View > Cells: "auto", "separate" or "merged" (docs/cells.md)
   bool operator==(const GuiSettings&) const = default;
 };
 

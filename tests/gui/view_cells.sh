@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # View > Cells (docs/cells.md, "Cost"; docs/gui.md): the 19-cell test wash lit alike is drawn as
 # one beam by default (auto), as 19 after View > Cells > One beam per cell, and as one again after
-# View > Cells > One beam where driven alike. Real X input (xdotool); the beams of each frame come
-# from the GUI's probe (HAZE_GUI_PROBE_FILE).
+# View > Cells > One beam where driven alike; the choice is remembered between runs
+# (gui-settings.json, docs/gui.md). Real X input (xdotool); the beams of each frame come from the
+# GUI's probe (HAZE_GUI_PROBE_FILE).
 set -uo pipefail
 haze=$1; root=$2
 . "$root/tests/gui/gui_session.bash"
@@ -25,7 +26,11 @@ json.dump({"format": "haze-show", "version": 1, "venue": {"gltf": venue},
           open(tmp + "/cells.haze.json", "w"))
 PY
 
-start_haze "haze - cells" "$tmp/cells.haze.json" --width 640 --height 360 --quality draft
+settings="$XDG_CONFIG_HOME/haze/gui-settings.json"
+start() { rm -f "$HAZE_GUI_PROBE_FILE"; start_haze "haze - cells" "$tmp/cells.haze.json" --width 640 --height 360 --quality draft; }
+quit() { tap ctrl+q; wait $pid; rc=$?; }
+written() { grep -q "\"cells\": \"$1\"" "$settings" 2>/dev/null; }  # the settings file holds cells: $1
+start
 check "auto, the default: the wash lit alike is one beam ($(probe "p['beams']"))" 'wait_until 60 "beams_are 1"'
 # The View menu at 114,10; Cells is its last item (at 150,209 with one camera), a submenu whose
 # items open to its right, 17 px apart.
@@ -33,9 +38,14 @@ cells_item() { click 114 10; xdotool mousemove --window "$win" 150 "$CELLS_Y"; s
 CELLS_Y=209
 cells_item; click 340 226
 check "View > Cells > One beam per cell: 19 beams ($(probe "p['beams']"))" 'wait_until 60 "beams_are 19"'
+check "the choice is written to gui-settings.json" 'wait_until 30 "written separate"'
+quit
+check "quits (rc $rc)" '[ "$rc" = 0 ]'
+start
+check "started again: still one beam per cell ($(probe "p['beams']"))" 'wait_until 60 "beams_are 19"'
 cells_item; click 340 209
 check "View > Cells > One beam where driven alike: one beam again ($(probe "p['beams']"))" 'wait_until 60 "beams_are 1"'
-tap ctrl+q
-wait $pid; rc=$?
+check "and written back" 'wait_until 30 "written auto"'
+quit
 check "quits (rc $rc)" '[ "$rc" = 0 ]'
 finish

@@ -37,6 +37,7 @@ TEST(GuiSettings, AMissingFileIsTheDefaults) {
   EXPECT_FALSE(l.settings.exposureLocked);
   EXPECT_TRUE(l.settings.fixtureNumbers);
   EXPECT_EQ(l.settings.viewportQuality, "default");
+  EXPECT_EQ(l.settings.cells, "auto");
   EXPECT_FALSE(loadGuiSettings({}).problem);  // no HOME: nothing to read, nothing wrong
   fs::remove_all(dir);
 }
@@ -45,7 +46,7 @@ TEST(GuiSettings, SavedAtomicallyIntoANewFolderAndReadBack) {
   const fs::path dir = scratchDir("roundtrip");
   const fs::path file = dir / "haze/gui-settings.json";
   const GuiSettings s{.showPanelWidthPx = 512.5f, .exposureLocked = true, .fixtureNumbers = false,
-                      .viewportQuality = "high"};
+                      .viewportQuality = "high", .cells = "separate"};
   ASSERT_TRUE(saveGuiSettings(file, s));
   const GuiSettingsLoad l = loadGuiSettings(file);
   EXPECT_FALSE(l.problem);
@@ -86,6 +87,11 @@ TEST(GuiSettings, ABadValueNamesItsKeyAndOnlyThatSettingIsTheDefault) {
   ASSERT_TRUE(l.problem);
   EXPECT_EQ(l.problem->place, "/viewport_quality");
   EXPECT_EQ(l.settings.viewportQuality, "default");
+  l = parseGuiSettings(R"({"cells": "one", "viewport_quality": "draft"})", "g.json");
+  ASSERT_TRUE(l.problem);
+  EXPECT_EQ(l.problem->str(), "g.json:/cells: expected \"auto\", \"separate\" or \"merged\"; the default is used");
+  EXPECT_EQ(l.settings.cells, "auto");
+  EXPECT_EQ(l.settings.viewportQuality, "draft");
 
   l = parseGuiSettings("[1, 2]", "g.json");
   ASSERT_TRUE(l.problem);
@@ -115,10 +121,12 @@ TEST(GuiSettings, ARunWritesBackOnlyWhatTheDesignerChanged) {
   EXPECT_FALSE(next.fixtureNumbers);
   EXPECT_EQ(next.showPanelWidthPx, saved.showPanelWidthPx);
   EXPECT_TRUE(next.exposureLocked);
-  // A quality chosen in the GUI is a change, and is written.
+  // A quality chosen in the GUI is a change, and is written; so is View > Cells.
   now.viewportQuality = "default";
+  now.cells = "separate";
   next = withChangedSettings(next, before, now);
   EXPECT_EQ(next.viewportQuality, "default");
+  EXPECT_EQ(next.cells, "separate");
   // Nothing changed: the file's settings unchanged (the GUI then writes nothing).
   EXPECT_EQ(withChangedSettings(saved, now, now), saved);
 }
