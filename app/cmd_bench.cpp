@@ -123,7 +123,7 @@ CommandLine benchCommandLine(BenchOptions& o) {
       .integer("--min-samples", o.minSamples, 0, 256, "0..256")
       .number("--refine", o.refine, 0.0, 2.0, "0..2 (0 = no refinement)")
       .integer("--density", o.densityCells, 2, kMaxDensityCellsPerSide, "2..256 cells per side")
-      .choice("--cells", o.cells, {"auto", "separate", "merged"})
+      .choice("--cells", o.cells, cellBeamsNames())
       .choice("--shadows", o.shadows, {"soft", "hard", "compare"})
       .number("--move", o.moveDeg, 0.0, 90.0, "0..90 degrees per frame")
       .number("--map-budget", o.mapBudgetMs, 0.0, 1e6, "milliseconds, 0 = unlimited");

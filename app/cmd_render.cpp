@@ -120,7 +120,7 @@ void declareOptions(CommandLine& cli, RenderArgs& a) {
       .choice("--exposure-mode", a.exposureMode, {"auto", "manual", "per-frame"})
       .number("--bloom", a.bloom, 0, 1, "a fraction 0..1")
       .choice("--movement", a.movement, {"real", "instant"})
-      .choice("--cells", a.cells, {"auto", "separate", "merged"})
+      .choice("--cells", a.cells, cellBeamsNames())
       .choice("--shadows", a.shadows, {"soft", "hard"})
       .choice("--exr-pixel", a.exrPixel, {"half", "float"})
       .text("-o|--output", a.out, "a file or a folder")
@@ -183,8 +183,7 @@ std::optional<std::string> checkOptions(RenderArgs& a) {
 RenderJobOptions jobOptions(const RenderArgs& a) {
   RenderJobOptions o{.camera = a.camera, .width = a.width, .height = a.height, .quality = *parseQuality(a.quality),
                      .exposureMode = parseExposureMode(a.exposureMode), .bloom = static_cast<float>(a.bloom),
-                     // The reference integrator draws what is there: every cell (docs/cells.md, "Cost").
-                     .cells = a.quality == "reference" && a.cells == "auto" ? CellBeams::Separate : cellBeamsNamed(a.cells),
+                     .cells = cellBeamsNamed(a.cells),
                      .bodies = !a.noBodies, .exrPixel = *parseExrPixel(a.exrPixel),
                      .progress = a.progress};
   if (!std::isnan(a.exposure)) o.exposureEv = static_cast<float>(a.exposure);

@@ -92,7 +92,10 @@ Status RenderSession::draw(const Show& show, const ProfileSet& profiles, const S
   auto density = atmosphere_.at(show, venue_.boundsMin, venue_.boundsMax, clockS, warnings, hazers_);
   for (const std::string& w : warnings) std::fprintf(stderr, "haze: warning: %s\n", w.c_str());
   auto frame = buildFrame(show, profiles, state, options_.camera,
-                          FrameOptions{.cells = options_.cells,
+                          // The reference integrator draws what is there: every cell (docs/cells.md, "Cost").
+                          FrameOptions{.cells = options_.quality == Quality::Reference && options_.cells == CellBeams::Auto
+                                                    ? CellBeams::Separate
+                                                    : options_.cells,
                                        .bodies = options_.bodies,
                                        .clockS = clockS,
                                        .density = std::move(density),

@@ -17,7 +17,7 @@ GuiSettings viewSettingsOf(const Gui& gui) {
   s.exposureLocked = gui.exposureLocked() || gui.lockExposureWhenMetered;
   s.fixtureNumbers = gui.showNumbers;
   s.viewportQuality = qualityName(gui.quality);
-  s.cells = gui.cells == CellBeams::Separate ? "separate" : gui.cells == CellBeams::Merged ? "merged" : "auto";
+  s.cells = cellBeamsName(gui.cells);
   return s;
 }
 

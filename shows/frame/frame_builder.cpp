@@ -64,8 +64,17 @@ uint64_t poseCacheKey(const BeamPose& pose) {
   return pk;
 }
 
+const std::vector<std::string>& cellBeamsNames() {
+  static const std::vector<std::string> names{"auto", "separate", "merged"};
+  return names;
+}
+
 CellBeams cellBeamsNamed(const std::string& name) {
   return name == "separate" ? CellBeams::Separate : name == "merged" ? CellBeams::Merged : CellBeams::Auto;
+}
+
+const char* cellBeamsName(CellBeams cells) {
+  return cells == CellBeams::Separate ? "separate" : cells == CellBeams::Merged ? "merged" : "auto";
 }
 
 Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, const StageState& state,

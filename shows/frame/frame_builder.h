@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "fixtures/core/result.h"
 #include "shows/scene/frame_state.h"
@@ -26,8 +27,11 @@ struct FrameTime {
 // cell_merge.h) and one per cell where they do not.
 enum class CellBeams { Separate, Merged, Auto };
 
-// "separate", "merged" or "auto" (the --cells options); anything else is auto.
+// The --cells options' names, "auto", "separate" and "merged", and the modes they name (anything
+// else is auto).
+const std::vector<std::string>& cellBeamsNames();
 CellBeams cellBeamsNamed(const std::string& name);
+const char* cellBeamsName(CellBeams cells);
 
 struct FrameOptions {
   CellBeams cells = CellBeams::Auto;

@@ -58,18 +58,9 @@ PY
 
 # The 19-cell test wash in the Cube venue (both travel with the repository).
 python3 "$repo/tests/data/gdtf/make_gdtf.py" "$repo/tests/data/gdtf/hex19_wash.xml" "$tmp/hex19.gdtf"
-python3 - "$tmp" "$repo/tests/data/shared/venues/Cube/Cube.gltf" <<'PY'
-import json, sys
-tmp, venue = sys.argv[1:3]
-def show(values):
-    return {"format": "haze-show", "version": 1, "venue": {"gltf": venue},
-            "atmosphere": {"scattering": 0.05, "absorption": 0.0, "phase": "hazy", "g": 0.0, "ambient": 0.05},
-            "cameras": [{"name": "FOH", "position": [0, 3, 12], "target": [0, 1, 0], "fov_y": 50}],
-            "profiles": {"w": "hex19.gdtf"}, "fixtures": [{"id": 1, "name": "wash", "profile": "w", "position": [0, 5, 0]}],
-            "cue_lists": [{"name": "Main", "cues": [{"number": "1", "values": {"1": values}}]}]}
-json.dump(show({"intensity": 1}), open(tmp + "/alike.haze.json", "w"))
-json.dump(show({"intensity": 1, "cells": {"4": {"color": [1, 0, 0]}}}), open(tmp + "/apart.haze.json", "w"))
-PY
+cube="$repo/tests/data/shared/venues/Cube/Cube.gltf"
+python3 "$repo/tests/cells_show.py" "$tmp/alike.haze.json" hex19.gdtf "$cube"
+python3 "$repo/tests/cells_show.py" "$tmp/apart.haze.json" hex19.gdtf "$cube" '{"intensity": 1, "cells": {"4": {"color": [1, 0, 0]}}}'
 read -r want_auto want_separate <<<"$(expected "$tmp/alike.haze.json")"
 check "the rule says one beam for the wash lit alike, 19 cell by cell (got '$want_auto $want_separate')" \
   "$([ "$want_auto" = 1 ] && [ "$want_separate" = 19 ]; echo $?)"

@@ -15,16 +15,7 @@ probe() {  # probe PYTHON-EXPRESSION: its value on the probe's JSON (p)
 beams_are() { [ "$(probe "p['beams']")" = "$1" ]; }
 
 python3 "$root/tests/data/gdtf/make_gdtf.py" "$root/tests/data/gdtf/hex19_wash.xml" "$tmp/hex19.gdtf"
-python3 - "$tmp" "$root/tests/data/shared/venues/Cube/Cube.gltf" <<'PY'
-import json, sys
-tmp, venue = sys.argv[1:3]
-json.dump({"format": "haze-show", "version": 1, "venue": {"gltf": venue},
-           "atmosphere": {"scattering": 0.05, "absorption": 0.0, "phase": "hazy", "g": 0.0, "ambient": 0.05},
-           "cameras": [{"name": "FOH", "position": [0, 3, 12], "target": [0, 1, 0], "fov_y": 50}],
-           "profiles": {"w": "hex19.gdtf"}, "fixtures": [{"id": 1, "name": "wash", "profile": "w", "position": [0, 5, 0]}],
-           "cue_lists": [{"name": "Main", "cues": [{"number": "1", "values": {"1": {"intensity": 1}}}]}]},
-          open(tmp + "/cells.haze.json", "w"))
-PY
+python3 "$root/tests/cells_show.py" "$tmp/cells.haze.json" hex19.gdtf "$root/tests/data/shared/venues/Cube/Cube.gltf"
 
 settings="$XDG_CONFIG_HOME/haze/gui-settings.json"
 start() { rm -f "$HAZE_GUI_PROBE_FILE"; start_haze "haze - cells" "$tmp/cells.haze.json" --width 640 --height 360 --quality draft; }

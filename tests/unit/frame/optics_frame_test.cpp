@@ -148,23 +148,10 @@ TEST(OpticsFrame, EveryCellGetsTheShutterBladesFrostAndPrism) {
   Show show;
   show.file = "cells.haze.json";
   show.fixtures.push_back(FixtureDef{.id = 1, .name = "", .profile = "wash", .mode = "", .position = {0, 5, 0}, .rotationDeg = {}, .patch = {}});
-  auto profile = std::make_shared<Profile>();
-  auto d = parametricDistribution(10.0f, 16.0f, 1000.0f);
-  ASSERT_TRUE(d.ok());
-  profile->distribution = std::make_shared<const Distribution>(*d);
-  profile->fieldAngleDeg = 16.0f;
-  profile->zoomDeg = {16.0f, 16.0f};
+  auto profile = rowOfCells(0.1f);
   profile->prisms.push_back(PrismSpec{"3", 3, 10.0f, false});
   profile->hasBlades = true;
   profile->hasFrost = true;
-  for (float x : {-0.1f, 0.0f, 0.1f}) {
-    Cell c;
-    c.name = "cell";
-    c.lensOffset = {x, 0.0f, 0.0f};
-    c.distribution = profile->distribution;
-    c.fieldAngleDeg = 16.0f;
-    profile->cells.push_back(c);
-  }
   ProfileSet profiles{{"wash", profile}};
   Attributes a;
   a.intensity = 0.8f;
