@@ -48,9 +48,9 @@ vec3 beamIntensity(Beam b, vec3 x, out vec3 wl, out float r) {
 // the sampler's rounding, lies at or beyond the depth its taps compare against: then every tap
 // there is lit (no blocker, every compare passes) and V is exactly 1, from one texel of the
 // pyramid instead of the taps. Most lit points are unshadowed; the taps cost most of the
-// surfaces and of the walks. The taps compare against z + dot(grad, u - centre) at map point u:
-// the receiver's plane through the lookup's point (grad 0 in the medium, see visibilityAt), so
-// the test takes the plane's highest value over the texels the pyramid's texel covers.
+// surfaces and of the walks. A tap at map point u (which lies in the box) compares against
+// z + dot(grad, u - centre), the receiver's plane through the lookup's point (grad 0 in the
+// medium, see visibilityAt), so the test takes the plane's highest value over the box.
 bool surelyLitBox(Beam b, vec2 lo, vec2 hi, float z, vec2 centre, vec2 grad) {
   if (uShadowMinOn == 0) return false;
   float size = float(textureSize(uShadowDepths, 0).x);
@@ -68,11 +68,8 @@ bool surelyLitBox(Beam b, vec2 lo, vec2 hi, float z, vec2 centre, vec2 grad) {
   ivec2 origin = ivec2(m > 0 ? n0 : 0, m > 1 ? (n0 - bitCount(n0)) - (q - bitCount(q)) : 0);
   // A shift, not a division: llvmpipe divides integer vectors one lane at a time.
   ivec2 cell = min(l >> (m + HAZE_SHADOW_MIN_FIRST_SHIFT), ivec2(max(1, n0 >> m) - 1));
-  // The map texels that pyramid texel covers, [cell c, (cell + 2) c) with c = 2^(m + shift)
-  // texels, in map units; the plane's rise over them, at the corner where it is highest.
-  float c = float(1 << (m + HAZE_SHADOW_MIN_FIRST_SHIFT)) / size;
-  vec2 rlo = vec2(cell) * c, rhi = rlo + 2.0 * c;
-  vec2 rise = max(grad * (rlo - centre), grad * (rhi - centre));
+  // The plane's rise over the box, at the corner where it is highest.
+  vec2 rise = max(grad * (lo - centre), grad * (hi - centre));
   return texelFetch(uShadowMin, ivec3(origin + cell, int(b.zb.w)), 0).r >= z + rise.x + rise.y;
 }
 
@@ -128,9 +125,10 @@ vec2 nextTap(vec2 dir) { return vec2(dir.x * GOLDEN_TURN.x - dir.y * GOLDEN_TURN
 // (hardTaps 5: the surfaces).
 //
 // A CPU rasteriser (llvmpipe) runs both sides of a branch for a block of pixels, masked, texture
-// lookups included; only a loop ends early, once no pixel of the block wants another turn. So
-// every lookup here is in a loop whose count is 0 where it cannot change V (surely lit, no
-// blocker, the other kind of shadow), and the one return is at the end.
+// lookups included; only a loop ends early, once no pixel of the block wants another turn (it
+// tests at the end of the body, so a loop no pixel wants runs its body once, masked: one tap,
+// not sixteen). So every lookup here is in a loop whose count is 0 where it cannot change V
+// (surely lit, no blocker, the other kind of shadow), and the one return is at the end.
 float visibilityAt(Beam b, SoftShadowSetup ss, vec4 c, vec2 grad, int blockerTaps, int filterTaps, int hardTaps) {
   vec3 s = c.xyz / c.w * 0.5 + 0.5;
   bool inMap = c.w > 0.0 && all(greaterThanEqual(s.xy, vec2(0.0))) && all(lessThanEqual(s.xy, vec2(1.0)));
