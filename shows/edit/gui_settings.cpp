@@ -64,18 +64,21 @@ GuiSettingsLoad parseGuiSettings(std::string_view text, const std::string& fileN
   };
   flag("exposure_locked", s.exposureLocked);
   flag("fixture_numbers", s.fixtureNumbers);
-  const auto choice = [&](const char* key, const auto& names, std::string& value, const char* expected) {
+  const auto choice = [&](const char* key, const auto& names, std::string& value) {
     const auto it = root.find(key);
     if (it == root.end()) return;
-    for (const char* n : names)
-      if (it->is_string() && it->get<std::string>() == n) {
-        value = n;
+    std::string expected;  // "a", "b" or "c"
+    for (size_t i = 0; i < std::size(names); ++i) {
+      if (it->is_string() && it->get<std::string>() == names[i]) {
+        value = names[i];
         return;
       }
-    problem(std::string("/") + key, std::string("expected ") + expected + "; the default is used");
+      expected += (i == 0 ? "" : i + 1 == std::size(names) ? " or " : ", ") + std::string("\"") + names[i] + "\"";
+    }
+    problem(std::string("/") + key, "expected " + expected + "; the default is used");
   };
-  choice("viewport_quality", kQualities, s.viewportQuality, "\"draft\", \"default\" or \"high\"");
-  choice("cells", kCells, s.cells, "\"auto\", \"separate\" or \"merged\"");
+  choice("viewport_quality", kQualities, s.viewportQuality);
+  choice("cells", kCells, s.cells);
   return out;
 }
 

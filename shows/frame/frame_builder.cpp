@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "shows/frame/cell_merge.h"
@@ -10,6 +11,10 @@
 
 namespace haze {
 namespace {
+
+// Each --cells mode with its name; the first is what an unknown name means.
+constexpr std::pair<const char*, CellBeams> kCellBeams[] = {
+    {"auto", CellBeams::Auto}, {"separate", CellBeams::Separate}, {"merged", CellBeams::Merged}};
 
 // Cache keys: equal keys promise equal shadow maps (pose) and light maps (optics) to the
 // renderer. Dimmer and colour are not in the light map, so fades of them never re-bake it.
@@ -65,16 +70,24 @@ uint64_t poseCacheKey(const BeamPose& pose) {
 }
 
 const std::vector<std::string>& cellBeamsNames() {
-  static const std::vector<std::string> names{"auto", "separate", "merged"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const auto& [name, cells] : kCellBeams) v.emplace_back(name);
+    return v;
+  }();
   return names;
 }
 
 CellBeams cellBeamsNamed(const std::string& name) {
-  return name == "separate" ? CellBeams::Separate : name == "merged" ? CellBeams::Merged : CellBeams::Auto;
+  for (const auto& [n, cells] : kCellBeams)
+    if (name == n) return cells;
+  return kCellBeams[0].second;
 }
 
 const char* cellBeamsName(CellBeams cells) {
-  return cells == CellBeams::Separate ? "separate" : cells == CellBeams::Merged ? "merged" : "auto";
+  for (const auto& [name, c] : kCellBeams)
+    if (c == cells) return name;
+  return kCellBeams[0].first;
 }
 
 Result<FrameState> buildFrame(const Show& show, const ProfileSet& profiles, const StageState& state,
